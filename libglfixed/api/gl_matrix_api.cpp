@@ -1,0 +1,208 @@
+// Matrix entry points (GL 2.1 §2.11.2).
+#include <cmath>
+#include <glm/gtc/type_ptr.hpp>
+
+#include "api/api.h"
+
+using namespace glfixed;
+
+namespace {
+
+void multiplyCurrent(Context& ctx, const glm::mat4& m) {
+  MatrixStack& stack = ctx.currentMatrixStack();
+  stack.top() = stack.top() * m;
+  ctx.markDirty(ctx.transform.matrixMode == GL_PROJECTION ? kDirtyProjection : kDirtyModelview);
+}
+
+void loadCurrent(Context& ctx, const glm::mat4& m) {
+  ctx.currentMatrixStack().top() = m;
+  ctx.markDirty(ctx.transform.matrixMode == GL_PROJECTION ? kDirtyProjection : kDirtyModelview);
+}
+
+glm::mat4 fromDoubles(const double d[16]) {
+  glm::mat4 m;
+  for (int i = 0; i < 16; ++i) glm::value_ptr(m)[i] = static_cast<float>(d[i]);
+  return m;
+}
+
+// The rotation matrix of GL 2.1 §2.11.2, in single precision as Mesa builds it
+// (the arithmetic order matters for bit-exact vertices): an axis-aligned
+// rotation is exact, any other axis is normalised first.
+glm::mat4 rotationMatrix(float angleDegrees, float x, float y, float z, bool* valid) {
+  float s = std::sin(static_cast<float>(angleDegrees * M_PI / 180.0));
+  float c = std::cos(static_cast<float>(angleDegrees * M_PI / 180.0));
+  glm::mat4 r(1.0f);  // r[col][row]
+  *valid = true;
+  if (x == 0 && y == 0 && z != 0) {
+    r[0][0] = c; r[1][1] = c;
+    r[1][0] = z < 0 ? s : -s;
+    r[0][1] = -r[1][0];
+    return r;
+  }
+  if (x == 0 && z == 0 && y != 0) {
+    r[0][0] = c; r[2][2] = c;
+    r[2][0] = y < 0 ? -s : s;
+    r[0][2] = -r[2][0];
+    return r;
+  }
+  if (y == 0 && z == 0 && x != 0) {
+    r[1][1] = c; r[2][2] = c;
+    r[2][1] = x < 0 ? s : -s;
+    r[1][2] = -r[2][1];
+    return r;
+  }
+  float mag = std::sqrt(x * x + y * y + z * z);
+  if (mag <= 1.0e-4f) {  // no rotation: the matrix is left as it is
+    *valid = false;
+    return r;
+  }
+  x /= mag;
+  y /= mag;
+  z /= mag;
+  float xx = x * x, yy = y * y, zz = z * z, xy = x * y, yz = y * z, zx = z * x;
+  float xs = x * s, ys = y * s, zs = z * s, oneC = 1.0f - c;
+  r[0][0] = oneC * xx + c;  r[1][0] = oneC * xy - zs; r[2][0] = oneC * zx + ys;
+  r[0][1] = oneC * xy + zs; r[1][1] = oneC * yy + c;  r[2][1] = oneC * yz - xs;
+  r[0][2] = oneC * zx - ys; r[1][2] = oneC * yz + xs; r[2][2] = oneC * zz + c;
+  return r;
+}
+
+void rotate(float angleDegrees, float x, float y, float z) {
+  Context* ctx = api::contextOutsideBeginEnd();
+  if (!ctx) return;
+  bool valid;
+  glm::mat4 r = rotationMatrix(angleDegrees, x, y, z, &valid);
+  if (valid) multiplyCurrent(*ctx, r);
+}
+
+void translate(float x, float y, float z) {
+  Context* ctx = api::contextOutsideBeginEnd();
+  if (!ctx) return;
+  glm::mat4 t(1.0f);
+  t[3] = glm::vec4(x, y, z, 1.0f);
+  multiplyCurrent(*ctx, t);
+}
+
+void scale(float x, float y, float z) {
+  Context* ctx = api::contextOutsideBeginEnd();
+  if (!ctx) return;
+  glm::mat4 s(1.0f);
+  s[0][0] = x;
+  s[1][1] = y;
+  s[2][2] = z;
+  multiplyCurrent(*ctx, s);
+}
+
+}  // namespace
+
+extern "C" {
+
+GLAPI void APIENTRY glMatrixMode(GLenum mode) {
+  Context* ctx = api::contextOutsideBeginEnd();
+  if (!ctx) return;
+  if (mode != GL_MODELVIEW && mode != GL_PROJECTION) {
+    // GL_TEXTURE and GL_COLOR need texturing and imaging, not implemented yet.
+    ctx->recordError(GL_INVALID_ENUM);
+    return;
+  }
+  ctx->transform.matrixMode = mode;
+}
+
+GLAPI void APIENTRY glLoadIdentity(void) {
+  Context* ctx = api::contextOutsideBeginEnd();
+  if (ctx) loadCurrent(*ctx, glm::mat4(1.0f));
+}
+
+GLAPI void APIENTRY glLoadMatrixf(const GLfloat* m) {
+  Context* ctx = api::contextOutsideBeginEnd();
+  if (ctx && m) loadCurrent(*ctx, glm::make_mat4(m));
+}
+
+GLAPI void APIENTRY glLoadMatrixd(const GLdouble* m) {
+  Context* ctx = api::contextOutsideBeginEnd();
+  if (ctx && m) loadCurrent(*ctx, fromDoubles(m));
+}
+
+GLAPI void APIENTRY glMultMatrixf(const GLfloat* m) {
+  Context* ctx = api::contextOutsideBeginEnd();
+  if (ctx && m) multiplyCurrent(*ctx, glm::make_mat4(m));
+}
+
+GLAPI void APIENTRY glMultMatrixd(const GLdouble* m) {
+  Context* ctx = api::contextOutsideBeginEnd();
+  if (ctx && m) multiplyCurrent(*ctx, fromDoubles(m));
+}
+
+GLAPI void APIENTRY glPushMatrix(void) {
+  Context* ctx = api::contextOutsideBeginEnd();
+  if (!ctx) return;
+  if (!ctx->currentMatrixStack().push()) ctx->recordError(GL_STACK_OVERFLOW);
+}
+
+GLAPI void APIENTRY glPopMatrix(void) {
+  Context* ctx = api::contextOutsideBeginEnd();
+  if (!ctx) return;
+  if (!ctx->currentMatrixStack().pop()) {
+    ctx->recordError(GL_STACK_UNDERFLOW);
+    return;
+  }
+  ctx->markDirty(ctx->transform.matrixMode == GL_PROJECTION ? kDirtyProjection : kDirtyModelview);
+}
+
+GLAPI void APIENTRY glRotatef(GLfloat angle, GLfloat x, GLfloat y, GLfloat z) { rotate(angle, x, y, z); }
+GLAPI void APIENTRY glRotated(GLdouble angle, GLdouble x, GLdouble y, GLdouble z) {
+  rotate(static_cast<float>(angle), static_cast<float>(x), static_cast<float>(y), static_cast<float>(z));
+}
+GLAPI void APIENTRY glTranslatef(GLfloat x, GLfloat y, GLfloat z) { translate(x, y, z); }
+GLAPI void APIENTRY glTranslated(GLdouble x, GLdouble y, GLdouble z) {
+  translate(static_cast<float>(x), static_cast<float>(y), static_cast<float>(z));
+}
+GLAPI void APIENTRY glScalef(GLfloat x, GLfloat y, GLfloat z) { scale(x, y, z); }
+GLAPI void APIENTRY glScaled(GLdouble x, GLdouble y, GLdouble z) {
+  scale(static_cast<float>(x), static_cast<float>(y), static_cast<float>(z));
+}
+
+// glFrustum and glOrtho (GL 2.1 §2.11.2) take doubles, but Mesa rounds the
+// arguments to float and builds the matrix in float; so do we.
+GLAPI void APIENTRY glFrustum(GLdouble left, GLdouble right, GLdouble bottom, GLdouble top, GLdouble zNear,
+                              GLdouble zFar) {
+  Context* ctx = api::contextOutsideBeginEnd();
+  if (!ctx) return;
+  if (zNear <= 0 || zFar <= 0 || left == right || bottom == top || zNear == zFar) {
+    ctx->recordError(GL_INVALID_VALUE);
+    return;
+  }
+  float l = static_cast<float>(left), r = static_cast<float>(right), b = static_cast<float>(bottom),
+        t = static_cast<float>(top), n = static_cast<float>(zNear), f = static_cast<float>(zFar);
+  glm::mat4 m(0.0f);  // m[col][row]
+  m[0][0] = (2.0f * n) / (r - l);
+  m[1][1] = (2.0f * n) / (t - b);
+  m[2][0] = (r + l) / (r - l);
+  m[2][1] = (t + b) / (t - b);
+  m[2][2] = -(f + n) / (f - n);
+  m[2][3] = -1.0f;
+  m[3][2] = -(2.0f * f * n) / (f - n);
+  multiplyCurrent(*ctx, m);
+}
+
+GLAPI void APIENTRY glOrtho(GLdouble left, GLdouble right, GLdouble bottom, GLdouble top, GLdouble zNear,
+                            GLdouble zFar) {
+  Context* ctx = api::contextOutsideBeginEnd();
+  if (!ctx) return;
+  if (left == right || bottom == top || zNear == zFar) {
+    ctx->recordError(GL_INVALID_VALUE);
+    return;
+  }
+  float l = static_cast<float>(left), r = static_cast<float>(right), b = static_cast<float>(bottom),
+        t = static_cast<float>(top), n = static_cast<float>(zNear), f = static_cast<float>(zFar);
+  glm::mat4 m(1.0f);
+  m[0][0] = 2.0f / (r - l);
+  m[1][1] = 2.0f / (t - b);
+  m[2][2] = -2.0f / (f - n);
+  m[3][0] = -(r + l) / (r - l);
+  m[3][1] = -(t + b) / (t - b);
+  m[3][2] = -(f + n) / (f - n);
+  multiplyCurrent(*ctx, m);
+}
+
+}  // extern "C"

@@ -1,0 +1,158 @@
+// glBegin/glEnd and the current vertex attributes: glVertex, glColor, glNormal
+// (GL 2.1 §2.6-§2.7), every variant.
+#include "api/api.h"
+#include "pipeline/draw.h"
+#include "vertex/color_material.h"
+
+using namespace glfixed;
+
+namespace {
+
+// Integer to float conversions of GL 2.1 table 2.9, evaluated as Mesa does
+// (a multiply by the reciprocal, in single precision): signed c maps to
+// (2c + 1) / (2^b - 1), unsigned c to c / (2^b - 1).
+inline float normalized(GLbyte c) { return (2.0f * c + 1.0f) * (1.0f / 255.0f); }
+inline float normalized(GLshort c) { return (2.0f * c + 1.0f) * (1.0f / 65535.0f); }
+inline float normalized(GLint c) { return static_cast<float>((2.0f * c + 1.0f) * (1.0 / 4294967294.0)); }
+inline float normalized(GLubyte c) { return static_cast<float>(c) / 255.0f; }
+inline float normalized(GLushort c) { return static_cast<float>(c) * (1.0f / 65535.0f); }
+inline float normalized(GLuint c) { return static_cast<float>(c * (1.0 / 4294967295.0)); }
+inline float normalized(GLfloat c) { return c; }
+inline float normalized(GLdouble c) { return static_cast<float>(c); }
+
+void addVertex(float x, float y, float z, float w) {
+  Context* ctx = currentContext();
+  if (!ctx) return;
+  if (!ctx->insideBeginEnd) return;  // GL 2.1 §2.6.3: undefined outside Begin/End; ignored
+  VertexBatch& b = ctx->batch;
+  b.position.emplace_back(x, y, z, w);
+  b.normal.push_back(ctx->current.normal);
+  b.color.push_back(ctx->current.color);
+  b.materialIndex.push_back(static_cast<uint32_t>(b.materials.size() - 1));
+}
+
+void color(float r, float g, float b, float a) {
+  Context* ctx = currentContext();
+  if (!ctx) return;
+  ctx->current.color = glm::vec4(r, g, b, a);
+  if (ctx->lighting.colorMaterial && !ctx->insideBeginEnd) trackColorMaterial(*ctx);
+}
+
+template <typename T>
+void color3(T r, T g, T b) {
+  color(normalized(r), normalized(g), normalized(b), 1.0f);
+}
+template <typename T>
+void color4(T r, T g, T b, T a) {
+  color(normalized(r), normalized(g), normalized(b), normalized(a));
+}
+
+void normal(float x, float y, float z) {
+  Context* ctx = currentContext();
+  if (ctx) ctx->current.normal = glm::vec3(x, y, z);
+}
+template <typename T>
+void normal3(T x, T y, T z) {
+  normal(normalized(x), normalized(y), normalized(z));
+}
+
+}  // namespace
+
+extern "C" {
+
+GLAPI void APIENTRY glBegin(GLenum mode) {
+  Context* ctx = api::contextOutsideBeginEnd();
+  if (!ctx) return;
+  if (mode > GL_POLYGON) {
+    ctx->recordError(GL_INVALID_ENUM);
+    return;
+  }
+  ctx->insideBeginEnd = true;
+  ctx->batch.reset(mode, ctx->lighting.material);
+}
+
+GLAPI void APIENTRY glEnd(void) {
+  Context* ctx = currentContext();
+  if (!ctx) return;
+  if (!ctx->insideBeginEnd) {
+    ctx->recordError(GL_INVALID_OPERATION);
+    return;
+  }
+  ctx->insideBeginEnd = false;
+  pipeline::drawBatch(*ctx, ctx->batch);
+  if (ctx->lighting.colorMaterial) trackColorMaterial(*ctx);
+}
+
+// glVertex: positions, as (x, y, 0, 1), (x, y, z, 1) or (x, y, z, w).
+GLAPI void APIENTRY glVertex2s(GLshort x, GLshort y) { addVertex(x, y, 0, 1); }
+GLAPI void APIENTRY glVertex2i(GLint x, GLint y) { addVertex(x, y, 0, 1); }
+GLAPI void APIENTRY glVertex2f(GLfloat x, GLfloat y) { addVertex(x, y, 0, 1); }
+GLAPI void APIENTRY glVertex2d(GLdouble x, GLdouble y) { addVertex(x, y, 0, 1); }
+GLAPI void APIENTRY glVertex3s(GLshort x, GLshort y, GLshort z) { addVertex(x, y, z, 1); }
+GLAPI void APIENTRY glVertex3i(GLint x, GLint y, GLint z) { addVertex(x, y, z, 1); }
+GLAPI void APIENTRY glVertex3f(GLfloat x, GLfloat y, GLfloat z) { addVertex(x, y, z, 1); }
+GLAPI void APIENTRY glVertex3d(GLdouble x, GLdouble y, GLdouble z) { addVertex(x, y, z, 1); }
+GLAPI void APIENTRY glVertex4s(GLshort x, GLshort y, GLshort z, GLshort w) { addVertex(x, y, z, w); }
+GLAPI void APIENTRY glVertex4i(GLint x, GLint y, GLint z, GLint w) { addVertex(x, y, z, w); }
+GLAPI void APIENTRY glVertex4f(GLfloat x, GLfloat y, GLfloat z, GLfloat w) { addVertex(x, y, z, w); }
+GLAPI void APIENTRY glVertex4d(GLdouble x, GLdouble y, GLdouble z, GLdouble w) { addVertex(x, y, z, w); }
+GLAPI void APIENTRY glVertex2sv(const GLshort* v) { addVertex(v[0], v[1], 0, 1); }
+GLAPI void APIENTRY glVertex2iv(const GLint* v) { addVertex(v[0], v[1], 0, 1); }
+GLAPI void APIENTRY glVertex2fv(const GLfloat* v) { addVertex(v[0], v[1], 0, 1); }
+GLAPI void APIENTRY glVertex2dv(const GLdouble* v) { addVertex(v[0], v[1], 0, 1); }
+GLAPI void APIENTRY glVertex3sv(const GLshort* v) { addVertex(v[0], v[1], v[2], 1); }
+GLAPI void APIENTRY glVertex3iv(const GLint* v) { addVertex(v[0], v[1], v[2], 1); }
+GLAPI void APIENTRY glVertex3fv(const GLfloat* v) { addVertex(v[0], v[1], v[2], 1); }
+GLAPI void APIENTRY glVertex3dv(const GLdouble* v) { addVertex(v[0], v[1], v[2], 1); }
+GLAPI void APIENTRY glVertex4sv(const GLshort* v) { addVertex(v[0], v[1], v[2], v[3]); }
+GLAPI void APIENTRY glVertex4iv(const GLint* v) { addVertex(v[0], v[1], v[2], v[3]); }
+GLAPI void APIENTRY glVertex4fv(const GLfloat* v) { addVertex(v[0], v[1], v[2], v[3]); }
+GLAPI void APIENTRY glVertex4dv(const GLdouble* v) { addVertex(v[0], v[1], v[2], v[3]); }
+
+// glColor: integer components are normalised (table 2.9); alpha 1 for glColor3.
+GLAPI void APIENTRY glColor3b(GLbyte r, GLbyte g, GLbyte b) { color3(r, g, b); }
+GLAPI void APIENTRY glColor3s(GLshort r, GLshort g, GLshort b) { color3(r, g, b); }
+GLAPI void APIENTRY glColor3i(GLint r, GLint g, GLint b) { color3(r, g, b); }
+GLAPI void APIENTRY glColor3f(GLfloat r, GLfloat g, GLfloat b) { color3(r, g, b); }
+GLAPI void APIENTRY glColor3d(GLdouble r, GLdouble g, GLdouble b) { color3(r, g, b); }
+GLAPI void APIENTRY glColor3ub(GLubyte r, GLubyte g, GLubyte b) { color3(r, g, b); }
+GLAPI void APIENTRY glColor3us(GLushort r, GLushort g, GLushort b) { color3(r, g, b); }
+GLAPI void APIENTRY glColor3ui(GLuint r, GLuint g, GLuint b) { color3(r, g, b); }
+GLAPI void APIENTRY glColor4b(GLbyte r, GLbyte g, GLbyte b, GLbyte a) { color4(r, g, b, a); }
+GLAPI void APIENTRY glColor4s(GLshort r, GLshort g, GLshort b, GLshort a) { color4(r, g, b, a); }
+GLAPI void APIENTRY glColor4i(GLint r, GLint g, GLint b, GLint a) { color4(r, g, b, a); }
+GLAPI void APIENTRY glColor4f(GLfloat r, GLfloat g, GLfloat b, GLfloat a) { color4(r, g, b, a); }
+GLAPI void APIENTRY glColor4d(GLdouble r, GLdouble g, GLdouble b, GLdouble a) { color4(r, g, b, a); }
+GLAPI void APIENTRY glColor4ub(GLubyte r, GLubyte g, GLubyte b, GLubyte a) { color4(r, g, b, a); }
+GLAPI void APIENTRY glColor4us(GLushort r, GLushort g, GLushort b, GLushort a) { color4(r, g, b, a); }
+GLAPI void APIENTRY glColor4ui(GLuint r, GLuint g, GLuint b, GLuint a) { color4(r, g, b, a); }
+GLAPI void APIENTRY glColor3bv(const GLbyte* v) { color3(v[0], v[1], v[2]); }
+GLAPI void APIENTRY glColor3sv(const GLshort* v) { color3(v[0], v[1], v[2]); }
+GLAPI void APIENTRY glColor3iv(const GLint* v) { color3(v[0], v[1], v[2]); }
+GLAPI void APIENTRY glColor3fv(const GLfloat* v) { color3(v[0], v[1], v[2]); }
+GLAPI void APIENTRY glColor3dv(const GLdouble* v) { color3(v[0], v[1], v[2]); }
+GLAPI void APIENTRY glColor3ubv(const GLubyte* v) { color3(v[0], v[1], v[2]); }
+GLAPI void APIENTRY glColor3usv(const GLushort* v) { color3(v[0], v[1], v[2]); }
+GLAPI void APIENTRY glColor3uiv(const GLuint* v) { color3(v[0], v[1], v[2]); }
+GLAPI void APIENTRY glColor4bv(const GLbyte* v) { color4(v[0], v[1], v[2], v[3]); }
+GLAPI void APIENTRY glColor4sv(const GLshort* v) { color4(v[0], v[1], v[2], v[3]); }
+GLAPI void APIENTRY glColor4iv(const GLint* v) { color4(v[0], v[1], v[2], v[3]); }
+GLAPI void APIENTRY glColor4fv(const GLfloat* v) { color4(v[0], v[1], v[2], v[3]); }
+GLAPI void APIENTRY glColor4dv(const GLdouble* v) { color4(v[0], v[1], v[2], v[3]); }
+GLAPI void APIENTRY glColor4ubv(const GLubyte* v) { color4(v[0], v[1], v[2], v[3]); }
+GLAPI void APIENTRY glColor4usv(const GLushort* v) { color4(v[0], v[1], v[2], v[3]); }
+GLAPI void APIENTRY glColor4uiv(const GLuint* v) { color4(v[0], v[1], v[2], v[3]); }
+
+// glNormal: signed integer components are normalised like colours.
+GLAPI void APIENTRY glNormal3b(GLbyte x, GLbyte y, GLbyte z) { normal3(x, y, z); }
+GLAPI void APIENTRY glNormal3s(GLshort x, GLshort y, GLshort z) { normal3(x, y, z); }
+GLAPI void APIENTRY glNormal3i(GLint x, GLint y, GLint z) { normal3(x, y, z); }
+GLAPI void APIENTRY glNormal3f(GLfloat x, GLfloat y, GLfloat z) { normal3(x, y, z); }
+GLAPI void APIENTRY glNormal3d(GLdouble x, GLdouble y, GLdouble z) { normal3(x, y, z); }
+GLAPI void APIENTRY glNormal3bv(const GLbyte* v) { normal3(v[0], v[1], v[2]); }
+GLAPI void APIENTRY glNormal3sv(const GLshort* v) { normal3(v[0], v[1], v[2]); }
+GLAPI void APIENTRY glNormal3iv(const GLint* v) { normal3(v[0], v[1], v[2]); }
+GLAPI void APIENTRY glNormal3fv(const GLfloat* v) { normal3(v[0], v[1], v[2]); }
+GLAPI void APIENTRY glNormal3dv(const GLdouble* v) { normal3(v[0], v[1], v[2]); }
+
+}  // extern "C"

@@ -1,0 +1,46 @@
+#include "framebuffer/framebuffer.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace glfixed {
+
+void ColorBuffer::setFormat(PixelFormat f) {
+  format = f;
+  switch (f) {
+    case PixelFormat::kRGBA: bytesPerPixel = 4; red = 0; green = 1; blue = 2; alpha = 3; break;
+    case PixelFormat::kBGRA: bytesPerPixel = 4; red = 2; green = 1; blue = 0; alpha = 3; break;
+    case PixelFormat::kARGB: bytesPerPixel = 4; red = 1; green = 2; blue = 3; alpha = 0; break;
+    case PixelFormat::kRGB:  bytesPerPixel = 3; red = 0; green = 1; blue = 2; alpha = -1; break;
+    case PixelFormat::kBGR:  bytesPerPixel = 3; red = 2; green = 1; blue = 0; alpha = -1; break;
+  }
+}
+
+void DepthBuffer::resize(int width, int height, int bits) {
+  bits_ = bits;
+  width_ = width;
+  height_ = height;
+  size_t n = bits ? static_cast<size_t>(width) * height : 0;
+  d16_.assign(bits == 16 ? n : 0, 0);
+  d32_.assign(bits == 24 ? n : 0, 0);
+}
+
+void DepthBuffer::fill(uint32_t v) {
+  if (bits_ == 16)
+    std::fill(d16_.begin(), d16_.end(), static_cast<uint16_t>(v));
+  else
+    std::fill(d32_.begin(), d32_.end(), v);
+}
+
+uint8_t floatToUnorm8(float v) {
+  v = std::min(std::max(v, 0.0f), 1.0f);
+  return static_cast<uint8_t>(std::nearbyint(v * 255.0f));
+}
+
+uint32_t depthToUnorm(double z, int bits) {
+  z = std::min(std::max(z, 0.0), 1.0);
+  double maxv = bits == 16 ? 65535.0 : 16777215.0;
+  return static_cast<uint32_t>(std::nearbyint(z * maxv));
+}
+
+}  // namespace glfixed

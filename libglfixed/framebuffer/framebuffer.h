@@ -1,0 +1,89 @@
+// The drawing surface: a client colour buffer (the memory an OSMesa program
+// hands to OSMesaMakeCurrent, in one of its pixel formats) and the depth buffer
+// the context owns. Window coordinates: (0,0) is the lower left pixel.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace glfixed {
+
+enum class PixelFormat { kRGBA, kBGRA, kARGB, kRGB, kBGR };
+
+struct ColorBuffer {
+  uint8_t* pixels = nullptr;  // client memory, not owned
+  int width = 0, height = 0;
+  int rowLength = 0;          // in pixels (OSMESA_ROW_LENGTH); >= width
+  bool yUp = true;            // OSMESA_Y_UP: row 0 of memory is the bottom row
+  PixelFormat format = PixelFormat::kRGBA;
+  int bytesPerPixel = 4;
+  // Byte offset of each channel inside a pixel; alpha is -1 where not stored.
+  int red = 0, green = 1, blue = 2, alpha = 3;
+
+  void setFormat(PixelFormat f);
+  uint8_t* pixel(int x, int y) const {
+    int row = yUp ? y : height - 1 - y;
+    return pixels + (static_cast<size_t>(row) * rowLength + x) * bytesPerPixel;
+  }
+  void write(int x, int y, const uint8_t rgba[4]) const {
+    uint8_t* p = pixel(x, y);
+    p[red] = rgba[0];
+    p[green] = rgba[1];
+    p[blue] = rgba[2];
+    if (alpha >= 0) p[alpha] = rgba[3];
+  }
+  void read(int x, int y, uint8_t rgba[4]) const {
+    const uint8_t* p = pixel(x, y);
+    rgba[0] = p[red];
+    rgba[1] = p[green];
+    rgba[2] = p[blue];
+    rgba[3] = alpha >= 0 ? p[alpha] : 255;
+  }
+};
+
+// Depth values are unsigned integers of `bits` bits (0 = no depth buffer,
+// 16, or 24). Mesa's OSMesa hands out 2 bytes a value for 16 bits and 4 bytes
+// a value for 24 bits (REFERENCE.md, "Depth and limits"); so do we.
+class DepthBuffer {
+ public:
+  void resize(int width, int height, int bits);
+  int bits() const { return bits_; }
+  int width() const { return width_; }
+  int height() const { return height_; }
+  uint32_t maxValue() const { return bits_ == 16 ? 0xffffu : 0xffffffu; }
+  int bytesPerValue() const { return bits_ == 16 ? 2 : 4; }
+  void* data() { return bits_ == 16 ? static_cast<void*>(d16_.data()) : static_cast<void*>(d32_.data()); }
+  uint32_t get(int x, int y) const {
+    size_t i = static_cast<size_t>(y) * width_ + x;
+    return bits_ == 16 ? d16_[i] : d32_[i];
+  }
+  void set(int x, int y, uint32_t v) {
+    size_t i = static_cast<size_t>(y) * width_ + x;
+    if (bits_ == 16)
+      d16_[i] = static_cast<uint16_t>(v);
+    else
+      d32_[i] = v;
+  }
+  void fill(uint32_t v);
+
+ private:
+  int bits_ = 0, width_ = 0, height_ = 0;
+  std::vector<uint16_t> d16_;
+  std::vector<uint32_t> d32_;
+};
+
+struct Framebuffer {
+  ColorBuffer color;
+  DepthBuffer depth;
+  bool bound() const { return color.pixels != nullptr; }
+  int width() const { return color.width; }
+  int height() const { return color.height; }
+};
+
+// Float [0,1] to an n-bit unsigned value as llvmpipe does it: a single-precision
+// multiply, then round to nearest even (REFERENCE.md, "Colour").
+uint8_t floatToUnorm8(float v);
+uint32_t depthToUnorm(double z, int bits);
+
+}  // namespace glfixed

@@ -1,0 +1,185 @@
+#include "framebuffer/read_pixels.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+namespace glfixed {
+
+void clearColor(Framebuffer& fb, const ColorBufferAttrib& cb) {
+  const ColorBuffer& c = fb.color;
+  uint8_t value[4];
+  for (int i = 0; i < 4; ++i) value[i] = floatToUnorm8(cb.clearColor[i]);
+  const bool allChannels = cb.writeMask[0] && cb.writeMask[1] && cb.writeMask[2] && cb.writeMask[3];
+  for (int y = 0; y < c.height; ++y) {
+    for (int x = 0; x < c.width; ++x) {
+      if (allChannels) {
+        c.write(x, y, value);
+        continue;
+      }
+      uint8_t old[4];
+      c.read(x, y, old);
+      for (int i = 0; i < 4; ++i)
+        if (cb.writeMask[i]) old[i] = value[i];
+      c.write(x, y, old);
+    }
+  }
+}
+
+namespace {
+
+int componentsOf(GLenum format) {
+  switch (format) {
+    case GL_RED: case GL_GREEN: case GL_BLUE: case GL_ALPHA: case GL_LUMINANCE: case GL_DEPTH_COMPONENT:
+      return 1;
+    case GL_LUMINANCE_ALPHA: return 2;
+    case GL_RGB: case GL_BGR: return 3;
+    case GL_RGBA: case GL_BGRA: return 4;
+    default: return 0;
+  }
+}
+
+int bytesOf(GLenum type) {
+  switch (type) {
+    case GL_UNSIGNED_BYTE: case GL_BYTE: return 1;
+    case GL_UNSIGNED_SHORT: case GL_SHORT: return 2;
+    case GL_UNSIGNED_INT: case GL_INT: case GL_FLOAT: return 4;
+    default: return 0;
+  }
+}
+
+bool isPacked8888(GLenum type) { return type == GL_UNSIGNED_INT_8_8_8_8 || type == GL_UNSIGNED_INT_8_8_8_8_REV; }
+
+bool isKnownType(GLenum type) {
+  switch (type) {
+    case GL_UNSIGNED_BYTE: case GL_BYTE: case GL_UNSIGNED_SHORT: case GL_SHORT: case GL_UNSIGNED_INT:
+    case GL_INT: case GL_FLOAT: case GL_BITMAP:
+    case GL_UNSIGNED_BYTE_3_3_2: case GL_UNSIGNED_BYTE_2_3_3_REV: case GL_UNSIGNED_SHORT_5_6_5:
+    case GL_UNSIGNED_SHORT_5_6_5_REV: case GL_UNSIGNED_SHORT_4_4_4_4: case GL_UNSIGNED_SHORT_4_4_4_4_REV:
+    case GL_UNSIGNED_SHORT_5_5_5_1: case GL_UNSIGNED_SHORT_1_5_5_5_REV: case GL_UNSIGNED_INT_8_8_8_8:
+    case GL_UNSIGNED_INT_8_8_8_8_REV: case GL_UNSIGNED_INT_10_10_10_2: case GL_UNSIGNED_INT_2_10_10_10_REV:
+      return true;
+    default:
+      return false;
+  }
+}
+
+bool isKnownFormat(GLenum format) {
+  return componentsOf(format) > 0 || format == GL_COLOR_INDEX || format == GL_STENCIL_INDEX;
+}
+
+// Stores one component, converted from [0,1] float (or the raw unsigned
+// value for depth) per GL 2.1 table 4.7.
+void storeComponent(uint8_t* dst, GLenum type, float f) {
+  switch (type) {
+    case GL_UNSIGNED_BYTE: *dst = static_cast<uint8_t>(std::nearbyint(f * 255.0f)); break;
+    case GL_BYTE: *reinterpret_cast<int8_t*>(dst) = static_cast<int8_t>(std::nearbyint((f * 255.0f - 1.0f) / 2)); break;
+    case GL_UNSIGNED_SHORT: {
+      uint16_t v = static_cast<uint16_t>(std::nearbyint(f * 65535.0f));
+      std::memcpy(dst, &v, 2);
+      break;
+    }
+    case GL_SHORT: {
+      int16_t v = static_cast<int16_t>(std::nearbyint((f * 65535.0f - 1.0f) / 2));
+      std::memcpy(dst, &v, 2);
+      break;
+    }
+    case GL_UNSIGNED_INT: {
+      uint32_t v = static_cast<uint32_t>(std::nearbyint(double(f) * 4294967295.0));
+      std::memcpy(dst, &v, 4);
+      break;
+    }
+    case GL_INT: {
+      int32_t v = static_cast<int32_t>(std::nearbyint((double(f) * 4294967295.0 - 1.0) / 2));
+      std::memcpy(dst, &v, 4);
+      break;
+    }
+    case GL_FLOAT: std::memcpy(dst, &f, 4); break;
+  }
+}
+
+}  // namespace
+
+GLenum readPixels(const Framebuffer& fb, const PixelStoreAttrib& pack, GLint x, GLint y, GLsizei width,
+                  GLsizei height, GLenum format, GLenum type, void* pixels) {
+  if (!isKnownFormat(format) || !isKnownType(type)) return GL_INVALID_ENUM;
+  if (format == GL_COLOR_INDEX || format == GL_STENCIL_INDEX) return GL_INVALID_OPERATION;  // RGBA, no stencil
+  if (format == GL_DEPTH_COMPONENT && fb.depth.bits() == 0) return GL_INVALID_OPERATION;
+  if (isPacked8888(type) && format != GL_RGBA && format != GL_BGRA) return GL_INVALID_OPERATION;
+  if (!isPacked8888(type) && bytesOf(type) == 0) return GL_INVALID_OPERATION;  // other packed types: not yet
+  if (!fb.bound() || !pixels || width == 0 || height == 0) return GL_NO_ERROR;
+
+  const int components = componentsOf(format);
+  const int componentBytes = isPacked8888(type) ? 1 : bytesOf(type);
+  const int pixelBytes = isPacked8888(type) ? 4 : components * componentBytes;
+  const int rowPixels = pack.packRowLength > 0 ? pack.packRowLength : width;
+  // GL 2.1 §4.3.2 / §3.6.4: rows are padded to the pack alignment.
+  size_t rowBytes = static_cast<size_t>(rowPixels) * pixelBytes;
+  const size_t align = static_cast<size_t>(pack.packAlignment);
+  if (componentBytes < static_cast<int>(align)) rowBytes = (rowBytes + align - 1) / align * align;
+  uint8_t* base = static_cast<uint8_t*>(pixels) + pack.packSkipRows * rowBytes +
+                  static_cast<size_t>(pack.packSkipPixels) * pixelBytes;
+
+  for (int row = 0; row < height; ++row) {
+    const int wy = y + row;
+    if (wy < 0 || wy >= fb.height()) continue;
+    uint8_t* dstRow = base + row * rowBytes;
+    for (int col = 0; col < width; ++col) {
+      const int wx = x + col;
+      if (wx < 0 || wx >= fb.width()) continue;
+      uint8_t* dst = dstRow + static_cast<size_t>(col) * pixelBytes;
+      if (format == GL_DEPTH_COMPONENT) {
+        const uint32_t d = fb.depth.get(wx, wy);
+        const int bits = fb.depth.bits();
+        if (type == GL_UNSIGNED_INT) {
+          // Replicate the high bits into the low ones: 1.0 reads as 0xffffffff.
+          uint32_t v = bits == 16 ? (d << 16) | d : (d << 8) | (d >> 16);
+          std::memcpy(dst, &v, 4);
+        } else {
+          storeComponent(dst, type, static_cast<float>(d * (1.0 / fb.depth.maxValue())));
+        }
+        continue;
+      }
+      uint8_t rgba[4];
+      fb.color.read(wx, wy, rgba);
+      if (isPacked8888(type)) {
+        // 8_8_8_8: the first component in the highest byte; _REV: in the lowest.
+        const uint8_t c[4] = {format == GL_BGRA ? rgba[2] : rgba[0], rgba[1], format == GL_BGRA ? rgba[0] : rgba[2],
+                              rgba[3]};
+        uint32_t v = type == GL_UNSIGNED_INT_8_8_8_8_REV
+                         ? (uint32_t(c[3]) << 24) | (uint32_t(c[2]) << 16) | (uint32_t(c[1]) << 8) | c[0]
+                         : (uint32_t(c[0]) << 24) | (uint32_t(c[1]) << 16) | (uint32_t(c[2]) << 8) | c[3];
+        std::memcpy(dst, &v, 4);
+        continue;
+      }
+      if (type == GL_UNSIGNED_BYTE) {  // the common case: bytes as they are
+        switch (format) {
+          case GL_RGBA: std::memcpy(dst, rgba, 4); continue;
+          case GL_RGB: std::memcpy(dst, rgba, 3); continue;
+          case GL_BGRA: dst[0] = rgba[2]; dst[1] = rgba[1]; dst[2] = rgba[0]; dst[3] = rgba[3]; continue;
+          case GL_BGR: dst[0] = rgba[2]; dst[1] = rgba[1]; dst[2] = rgba[0]; continue;
+          default: break;
+        }
+      }
+      float f[4];
+      for (int i = 0; i < 4; ++i) f[i] = rgba[i] * (1.0f / 255.0f);
+      float out[4];
+      switch (format) {
+        case GL_RED: out[0] = f[0]; break;
+        case GL_GREEN: out[0] = f[1]; break;
+        case GL_BLUE: out[0] = f[2]; break;
+        case GL_ALPHA: out[0] = f[3]; break;
+        case GL_LUMINANCE: out[0] = std::min(1.0f, f[0] + f[1] + f[2]); break;
+        case GL_LUMINANCE_ALPHA: out[0] = std::min(1.0f, f[0] + f[1] + f[2]); out[1] = f[3]; break;
+        case GL_RGB: out[0] = f[0]; out[1] = f[1]; out[2] = f[2]; break;
+        case GL_BGR: out[0] = f[2]; out[1] = f[1]; out[2] = f[0]; break;
+        case GL_RGBA: std::memcpy(out, f, sizeof f); break;
+        case GL_BGRA: out[0] = f[2]; out[1] = f[1]; out[2] = f[0]; out[3] = f[3]; break;
+      }
+      for (int i = 0; i < components; ++i) storeComponent(dst + i * componentBytes, type, out[i]);
+    }
+  }
+  return GL_NO_ERROR;
+}
+
+}  // namespace glfixed

@@ -1,0 +1,51 @@
+// One vertex batch for every way of submitting vertices: glBegin/glEnd fills it
+// now; vertex arrays and display lists will fill the same structure. Stages
+// read it as arrays (structure of arrays), never a call at a time.
+#pragma once
+
+#include <GL/gl.h>
+
+#include <array>
+#include <cstdint>
+#include <glm/glm.hpp>
+#include <vector>
+
+#include "state/lighting_attrib.h"
+
+namespace glfixed {
+
+using MaterialPair = std::array<Material, 2>;  // [kFront], [kBack]
+
+struct VertexBatch {
+  GLenum mode = GL_TRIANGLES;
+  std::vector<glm::vec4> position;  // object coordinates
+  std::vector<glm::vec3> normal;    // object coordinates, as given
+  std::vector<glm::vec4> color;     // the current colour at each vertex
+  // glMaterial between glBegin and glEnd (GL 2.1 §2.14.3): vertex i is lit with
+  // materials[materialIndex[i]]. materials[0] is the material at glBegin.
+  std::vector<uint32_t> materialIndex;
+  std::vector<MaterialPair> materials;
+
+  size_t size() const { return position.size(); }
+  void reset(GLenum primitiveMode, const MaterialPair& current) {
+    mode = primitiveMode;
+    position.clear();
+    normal.clear();
+    color.clear();
+    materialIndex.clear();
+    materials.assign(1, current);
+  }
+};
+
+// What the vertex stage hands to primitive assembly: clip coordinates and
+// colours clamped to [0,1] (llvmpipe clamps at the vertex, REFERENCE.md).
+struct ShadedVertices {
+  std::vector<glm::vec4> clip;
+  std::array<std::vector<glm::vec4>, 2> primary;    // [kFront], [kBack]
+  std::array<std::vector<glm::vec4>, 2> secondary;  // specular, GL_SEPARATE_SPECULAR_COLOR only
+  bool hasBack = false;       // two-sided lighting: back colours are filled
+  bool hasSecondary = false;  // separate specular: secondary colours are filled
+  size_t size() const { return clip.size(); }
+};
+
+}  // namespace glfixed

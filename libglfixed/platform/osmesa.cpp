@@ -1,0 +1,245 @@
+// The OSMesa off-screen API (Mesa's GL/osmesa.h ABI): contexts that render
+// into a client buffer. Behaviour measured on Mesa 22.3 where the header is
+// silent (REFERENCE.md, "Depth and limits"; the probe in tests/api).
+#include <GL/osmesa.h>
+
+#include <cstdio>
+#include <cstring>
+
+#include "api/entry_points.h"
+#include "state/context.h"
+
+using glfixed::Context;
+using glfixed::PixelFormat;
+
+// The opaque handle of osmesa.h is a pointer to this.
+struct osmesa_context {
+  Context context;
+  PixelFormat format;
+  int width = 0, height = 0;
+  GLint userRowLength = 0;
+  bool yUp = true;
+  explicit osmesa_context(PixelFormat f, int depthBits) : context(depthBits), format(f) {}
+};
+
+namespace {
+
+thread_local osmesa_context* tCurrent = nullptr;
+
+bool pixelFormatOf(GLenum format, PixelFormat* out) {
+  switch (format) {
+    case OSMESA_RGBA: *out = PixelFormat::kRGBA; return true;
+    case OSMESA_BGRA: *out = PixelFormat::kBGRA; return true;
+    case OSMESA_ARGB: *out = PixelFormat::kARGB; return true;
+    case OSMESA_RGB: *out = PixelFormat::kRGB; return true;
+    case OSMESA_BGR: *out = PixelFormat::kBGR; return true;
+    default: return false;  // colour index and RGB 565 are not supported
+  }
+}
+
+GLenum osmesaFormatOf(PixelFormat f) {
+  switch (f) {
+    case PixelFormat::kRGBA: return OSMESA_RGBA;
+    case PixelFormat::kBGRA: return OSMESA_BGRA;
+    case PixelFormat::kARGB: return OSMESA_ARGB;
+    case PixelFormat::kRGB: return OSMESA_RGB;
+    case PixelFormat::kBGR: return OSMESA_BGR;
+  }
+  return OSMESA_RGBA;
+}
+
+// Mesa's choice of depth buffer: with a stencil buffer any depth request gives
+// 24 bits (a packed depth-stencil format); without one, 16..23 bits give 16,
+// 24 and more give 24, and fewer than 16 give none.
+int depthBitsFor(GLint depthBits, GLint stencilBits) {
+  if (depthBits <= 0) return 0;
+  if (stencilBits > 0) return 24;
+  if (depthBits >= 24) return 24;
+  if (depthBits >= 16) return 16;
+  return 0;
+}
+
+// Points the context's colour buffer at the client memory with the current
+// pixel-store settings.
+void bindColorBuffer(osmesa_context& c, void* buffer) {
+  glfixed::ColorBuffer& cb = c.context.framebuffer.color;
+  cb.setFormat(c.format);
+  cb.pixels = static_cast<uint8_t*>(buffer);
+  cb.width = c.width;
+  cb.height = c.height;
+  cb.rowLength = c.userRowLength > 0 ? c.userRowLength : c.width;
+  cb.yUp = c.yUp;
+}
+
+}  // namespace
+
+extern "C" {
+
+GLAPI OSMesaContext APIENTRY OSMesaCreateContextExt(GLenum format, GLint depthBits, GLint stencilBits,
+                                                    GLint accumBits, OSMesaContext sharelist) {
+  PixelFormat f;
+  if (!pixelFormatOf(format, &f)) {
+    std::fprintf(stderr, "libglfixed: OSMesaCreateContext: unsupported format 0x%x\n", format);
+    return nullptr;
+  }
+  return new (std::nothrow) osmesa_context(f, depthBitsFor(depthBits, stencilBits));
+}
+
+GLAPI OSMesaContext APIENTRY OSMesaCreateContext(GLenum format, OSMesaContext sharelist) {
+  // Mesa asks for 24 depth and 8 stencil bits here.
+  return OSMesaCreateContextExt(format, 24, 8, 0, sharelist);
+}
+
+GLAPI OSMesaContext APIENTRY OSMesaCreateContextAttribs(const int* attribList, OSMesaContext sharelist) {
+  GLenum format = OSMESA_RGBA;
+  GLint depthBits = 0, stencilBits = 0, accumBits = 0;
+  GLint profile = OSMESA_COMPAT_PROFILE, major = 1, minor = 0;
+  for (int i = 0; attribList && attribList[i]; i += 2) {
+    const int value = attribList[i + 1];
+    switch (attribList[i]) {
+      case OSMESA_FORMAT: format = value; break;
+      case OSMESA_DEPTH_BITS: depthBits = value; break;
+      case OSMESA_STENCIL_BITS: stencilBits = value; break;
+      case OSMESA_ACCUM_BITS: accumBits = value; break;
+      case OSMESA_PROFILE: profile = value; break;
+      case OSMESA_CONTEXT_MAJOR_VERSION: major = value; break;
+      case OSMESA_CONTEXT_MINOR_VERSION: minor = value; break;
+      default:
+        std::fprintf(stderr, "libglfixed: OSMesaCreateContextAttribs: unknown attribute 0x%x\n", attribList[i]);
+        return nullptr;
+    }
+  }
+  // Only a compatibility context up to GL 2.1 can be had.
+  if (profile != OSMESA_COMPAT_PROFILE || major > 2 || (major == 2 && minor > 1)) {
+    std::fprintf(stderr, "libglfixed: OSMesaCreateContextAttribs: only GL <= 2.1 compatibility contexts\n");
+    return nullptr;
+  }
+  return OSMesaCreateContextExt(format, depthBits, stencilBits, accumBits, sharelist);
+}
+
+GLAPI void APIENTRY OSMesaDestroyContext(OSMesaContext ctx) {
+  if (!ctx) return;
+  if (tCurrent == ctx) {
+    tCurrent = nullptr;
+    glfixed::setCurrentContext(nullptr);
+  }
+  delete ctx;
+}
+
+GLAPI GLboolean APIENTRY OSMesaMakeCurrent(OSMesaContext ctx, void* buffer, GLenum type, GLsizei width,
+                                           GLsizei height) {
+  if (!ctx && !buffer) {  // release the current context
+    tCurrent = nullptr;
+    glfixed::setCurrentContext(nullptr);
+    return GL_TRUE;
+  }
+  if (!ctx || !buffer || width < 1 || height < 1 || width > glfixed::kMaxViewportSize ||
+      height > glfixed::kMaxViewportSize)
+    return GL_FALSE;
+  if (type != GL_UNSIGNED_BYTE) {
+    std::fprintf(stderr, "libglfixed: OSMesaMakeCurrent: only GL_UNSIGNED_BYTE buffers are supported\n");
+    return GL_FALSE;
+  }
+  ctx->width = width;
+  ctx->height = height;
+  bindColorBuffer(*ctx, buffer);
+  glfixed::DepthBuffer& depth = ctx->context.framebuffer.depth;
+  if (depth.width() != width || depth.height() != height || depth.bits() != ctx->context.requestedDepthBits)
+    depth.resize(width, height, ctx->context.requestedDepthBits);
+  // GL 2.1 §2.11.1: the viewport starts as the size of the first drawable.
+  if (!ctx->context.viewportInitialized) {
+    ctx->context.viewport.width = width;
+    ctx->context.viewport.height = height;
+    ctx->context.viewportInitialized = true;
+  }
+  tCurrent = ctx;
+  glfixed::setCurrentContext(&ctx->context);
+  return GL_TRUE;
+}
+
+GLAPI OSMesaContext APIENTRY OSMesaGetCurrentContext(void) { return tCurrent; }
+
+GLAPI void APIENTRY OSMesaPixelStore(GLint pname, GLint value) {
+  osmesa_context* c = tCurrent;
+  if (!c) return;
+  switch (pname) {
+    case OSMESA_ROW_LENGTH:
+      if (value < 0) {
+        c->context.recordError(GL_INVALID_VALUE);
+        return;
+      }
+      c->userRowLength = value;
+      break;
+    case OSMESA_Y_UP:
+      c->yUp = value != 0;
+      break;
+    default:
+      c->context.recordError(GL_INVALID_ENUM);
+      return;
+  }
+  bindColorBuffer(*c, c->context.framebuffer.color.pixels);
+}
+
+GLAPI void APIENTRY OSMesaGetIntegerv(GLint pname, GLint* value) {
+  osmesa_context* c = tCurrent;
+  if (!value) return;
+  switch (pname) {
+    case OSMESA_MAX_WIDTH: case OSMESA_MAX_HEIGHT: *value = glfixed::kMaxViewportSize; return;
+    default: break;
+  }
+  if (!c) return;
+  switch (pname) {
+    case OSMESA_WIDTH: *value = c->width; return;
+    case OSMESA_HEIGHT: *value = c->height; return;
+    case OSMESA_FORMAT: *value = static_cast<GLint>(osmesaFormatOf(c->format)); return;
+    case OSMESA_TYPE: *value = GL_UNSIGNED_BYTE; return;
+    case OSMESA_ROW_LENGTH: *value = c->userRowLength; return;
+    case OSMESA_Y_UP: *value = c->yUp ? 1 : 0; return;
+    default: c->context.recordError(GL_INVALID_ENUM); return;
+  }
+}
+
+GLAPI GLboolean APIENTRY OSMesaGetDepthBuffer(OSMesaContext c, GLint* width, GLint* height, GLint* bytesPerValue,
+                                              void** buffer) {
+  if (!c || c->context.framebuffer.depth.bits() == 0 || c->width == 0) {
+    if (width) *width = 0;
+    if (height) *height = 0;
+    if (bytesPerValue) *bytesPerValue = 0;
+    if (buffer) *buffer = nullptr;
+    return GL_FALSE;
+  }
+  glfixed::DepthBuffer& d = c->context.framebuffer.depth;
+  if (width) *width = d.width();
+  if (height) *height = d.height();
+  if (bytesPerValue) *bytesPerValue = d.bytesPerValue();
+  if (buffer) *buffer = d.data();
+  return GL_TRUE;
+}
+
+GLAPI GLboolean APIENTRY OSMesaGetColorBuffer(OSMesaContext c, GLint* width, GLint* height, GLint* format,
+                                              void** buffer) {
+  if (!c || !c->context.framebuffer.color.pixels) {
+    if (width) *width = 0;
+    if (height) *height = 0;
+    if (format) *format = 0;
+    if (buffer) *buffer = nullptr;
+    return GL_FALSE;
+  }
+  if (width) *width = c->width;
+  if (height) *height = c->height;
+  if (format) *format = static_cast<GLint>(osmesaFormatOf(c->format));
+  if (buffer) *buffer = c->context.framebuffer.color.pixels;
+  return GL_TRUE;
+}
+
+GLAPI OSMESAproc APIENTRY OSMesaGetProcAddress(const char* funcName) {
+  return reinterpret_cast<OSMESAproc>(glfixed::api::procAddress(funcName));
+}
+
+// Colours are always clamped in this fixed-function pipeline.
+GLAPI void APIENTRY OSMesaColorClamp(GLboolean enable) {}
+
+// Mesa's post-processing filters are not provided.
+GLAPI void APIENTRY OSMesaPostprocess(OSMesaContext osmesa, const char* filter, unsigned enableValue) {}
+
+}  // extern "C"

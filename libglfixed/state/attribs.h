@@ -1,0 +1,63 @@
+// The attribute groups of glPushAttrib (GL 2.1 §6.1.14, tables 6.5-6.37) that the
+// core uses, one struct each, so that push and pop are a copy.
+#pragma once
+
+#include <GL/gl.h>
+
+#include <glm/glm.hpp>
+
+namespace glfixed {
+
+// GL_CURRENT_BIT: the current vertex attributes.
+struct CurrentAttrib {
+  glm::vec4 color{1, 1, 1, 1};
+  glm::vec3 normal{0, 0, 1};
+};
+
+// GL_TRANSFORM_BIT.
+struct TransformAttrib {
+  GLenum matrixMode = GL_MODELVIEW;
+  bool normalize = false;
+  bool rescaleNormal = false;
+};
+
+// GL_VIEWPORT_BIT.
+struct ViewportAttrib {
+  GLint x = 0, y = 0;
+  GLsizei width = 0, height = 0;
+  GLclampd depthNear = 0, depthFar = 1;
+};
+
+// GL_DEPTH_BUFFER_BIT.
+struct DepthBufferAttrib {
+  bool test = false;
+  GLenum func = GL_LESS;
+  bool writeMask = true;
+  GLclampd clearDepth = 1;
+};
+
+// GL_COLOR_BUFFER_BIT.
+struct ColorBufferAttrib {
+  glm::vec4 clearColor{0, 0, 0, 0};
+  bool dither = true;
+  bool writeMask[4] = {true, true, true, true};
+};
+
+// GL_POLYGON_BIT.
+struct PolygonAttrib {
+  bool cullFace = false;
+  GLenum cullFaceMode = GL_BACK;
+  GLenum frontFace = GL_CCW;
+};
+
+}  // namespace glfixed
+
+namespace glfixed {
+
+// GL_CLIENT_PIXEL_STORE_BIT (glPixelStore, GL 2.1 §3.6.1, §4.3.2).
+struct PixelStoreAttrib {
+  GLint packAlignment = 4, packRowLength = 0, packSkipPixels = 0, packSkipRows = 0;
+  GLint unpackAlignment = 4, unpackRowLength = 0, unpackSkipPixels = 0, unpackSkipRows = 0;
+};
+
+}  // namespace glfixed

@@ -1,0 +1,73 @@
+// The GL context: every piece of GL state, grouped as glPushAttrib groups it,
+// plus the derived state the stages read. One per OSMesa context; the current
+// context is per thread.
+#pragma once
+
+#include <GL/gl.h>
+
+#include "framebuffer/framebuffer.h"
+#include "pipeline/vertex_batch.h"
+#include "state/attribs.h"
+#include "state/dirty.h"
+#include "state/lighting_attrib.h"
+#include "state/matrix_stack.h"
+#include "vertex/light_constants.h"
+#include "vertex/vertex_stage.h"
+
+namespace glfixed {
+
+constexpr int kMaxModelviewStackDepth = 32;
+constexpr int kMaxProjectionStackDepth = 32;
+constexpr int kMaxViewportSize = 16384;
+constexpr int kSubpixelBits = 8;
+
+class Context {
+ public:
+  explicit Context(int depthBits);
+
+  // API state, by attribute group.
+  CurrentAttrib current;
+  TransformAttrib transform;
+  ViewportAttrib viewport;
+  DepthBufferAttrib depth;
+  ColorBufferAttrib colorBuffer;
+  PolygonAttrib polygon;
+  PixelStoreAttrib pixelStore;
+  LightingAttrib lighting;
+  MatrixStack modelview{kMaxModelviewStackDepth};
+  MatrixStack projection{kMaxProjectionStackDepth};
+
+  Framebuffer framebuffer;
+  int requestedDepthBits;
+  bool viewportInitialized = false;  // the first MakeCurrent sets the viewport
+
+  // Between glBegin and glEnd (GL 2.1 §2.6.3).
+  bool insideBeginEnd = false;
+  VertexBatch batch;
+
+  // Errors (GL 2.1 §2.5): the first error is kept until glGetError reads it.
+  void recordError(GLenum error) {
+    if (error_ == GL_NO_ERROR) error_ = error;
+  }
+  GLenum takeError() {
+    GLenum e = error_;
+    error_ = GL_NO_ERROR;
+    return e;
+  }
+
+  MatrixStack& currentMatrixStack() { return transform.matrixMode == GL_PROJECTION ? projection : modelview; }
+  void markDirty(uint32_t bits) { dirty_ |= bits; }
+  // Rebuilds the derived state from the dirty bits; called before every draw.
+  const vertex::VertexState& validate();
+
+ private:
+  GLenum error_ = GL_NO_ERROR;
+  uint32_t dirty_ = kDirtyAll;
+  vertex::VertexState vertexState_;
+  vertex::LightingConstants lightingConstants_;
+};
+
+Context* currentContext();
+void setCurrentContext(Context* ctx);
+
+}  // namespace glfixed

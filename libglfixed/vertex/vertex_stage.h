@@ -1,0 +1,28 @@
+// The vertex stage: object coordinates to clip coordinates, and the colour of
+// each vertex (the current colour, or lit per GL 2.1 §2.14), for a whole batch.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include "pipeline/vertex_batch.h"
+#include "vertex/light_constants.h"
+
+namespace glfixed::vertex {
+
+struct VertexState {
+  glm::mat4 eyeFromObject{1};   // modelview
+  glm::mat4 clipFromObject{1};  // projection * modelview
+  glm::mat3 eyeNormalFromObject{1};  // inverse transpose of the modelview's upper 3x3
+  bool lighting = false;
+  const LightingConstants* lightingConstants = nullptr;
+  const LightingAttrib* lightingAttrib = nullptr;
+  const TransformAttrib* transformAttrib = nullptr;
+};
+
+void shadeBatch(const VertexState& state, const VertexBatch& batch, ShadedVertices& out);
+
+// The lighting stage proper (vertex/lighting.cpp): fills out.primary (and back,
+// secondary as the light model asks) for every vertex of the batch.
+void lightBatch(const VertexState& state, const VertexBatch& batch, ShadedVertices& out);
+
+}  // namespace glfixed::vertex

@@ -1,0 +1,9 @@
+/* glDepthFunc(GL_NOTEQUAL) against overlapping, coplanar and far-plane geometry. */
+#include "depth_common.h"
+
+int main(int argc, char **argv)
+{
+    depth_begin(argc, argv);
+    depth_draw(GL_NOTEQUAL);
+    return scene_end();
+}

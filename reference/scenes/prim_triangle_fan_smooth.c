@@ -1,0 +1,9 @@
+/* GL_TRIANGLE_FAN with GL_SMOOTH shading and a distinct colour per vertex. */
+#include "prim_common.h"
+
+int main(int argc, char **argv)
+{
+    prim_begin(argc, argv, GL_SMOOTH);
+    draw_triangle_fan();
+    return scene_end();
+}

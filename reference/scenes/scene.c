@@ -1,0 +1,334 @@
+/* scene.c - helper library for the reference scenes (see scene.h). */
+#include "scene.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define GUARD_BYTES 256
+#define CANARY 0xA5
+
+static struct {
+    OSMesaContext ctx;
+    unsigned char *buffer;     /* client colour buffer (plus guard zone) */
+    size_t buffer_bytes;       /* image part: row_pixels * height * bpp */
+    int width, height;
+    int row_pixels;            /* pixels per row in the client buffer */
+    int bpp;                   /* bytes per pixel of the client format */
+    GLenum format;
+    int y_up;                  /* orientation used to decode the buffer */
+    int has_depth;
+    unsigned int cleared_depth;
+    const char *prefix;
+    const char *refused;       /* non-NULL: scene_begin_try was refused */
+} S;
+
+static void fail(const char *what)
+{
+    fprintf(stderr, "scene: %s\n", what);
+    exit(2);
+}
+
+static int format_bpp(GLenum format)
+{
+    switch (format) {
+    case OSMESA_RGBA: case OSMESA_BGRA: case OSMESA_ARGB: return 4;
+    case OSMESA_RGB: case OSMESA_BGR: return 3;
+    default: return 0;
+    }
+}
+
+static int format_has_alpha(GLenum format)
+{
+    return format == OSMESA_RGBA || format == OSMESA_BGRA || format == OSMESA_ARGB;
+}
+
+/* Decode one client-buffer pixel into RGBA. */
+static void decode_pixel(const unsigned char *p, unsigned char out[4])
+{
+    switch (S.format) {
+    case OSMESA_RGBA: out[0] = p[0]; out[1] = p[1]; out[2] = p[2]; out[3] = p[3]; break;
+    case OSMESA_BGRA: out[0] = p[2]; out[1] = p[1]; out[2] = p[0]; out[3] = p[3]; break;
+    case OSMESA_ARGB: out[0] = p[1]; out[1] = p[2]; out[2] = p[3]; out[3] = p[0]; break;
+    case OSMESA_RGB:  out[0] = p[0]; out[1] = p[1]; out[2] = p[2]; out[3] = 255; break;
+    case OSMESA_BGR:  out[0] = p[2]; out[1] = p[1]; out[2] = p[0]; out[3] = 255; break;
+    }
+}
+
+static unsigned int read_depth_value(const unsigned char *p, int bytes)
+{
+    unsigned int v = 0;
+    if (bytes == 2) { unsigned short s; memcpy(&s, p, 2); v = s; }
+    else if (bytes == 4) { memcpy(&v, p, 4); }
+    else if (bytes == 1) { v = *p; }
+    return v;
+}
+
+int scene_width(void) { return S.width; }
+int scene_height(void) { return S.height; }
+
+void scene_begin(int argc, char **argv, int width, int height)
+{
+    scene_options o;
+    memset(&o, 0, sizeof o);
+    o.width = width;
+    o.height = height;
+    o.format = OSMESA_RGBA;
+    o.depth_bits = 24;
+    o.y_up = 1;
+    o.row_length = 0;
+    scene_begin_ext(argc, argv, &o);
+}
+
+void scene_begin_ext(int argc, char **argv, const scene_options *opts)
+{
+    if (scene_begin_try(argc, argv, opts) != 0) {
+        fprintf(stderr, "scene: OSMesa refused the context (%s)\n", S.refused);
+        exit(2);
+    }
+}
+
+int scene_begin_try(int argc, char **argv, const scene_options *opts)
+{
+    GLint dw = 0, dh = 0, dbytes = 0;
+    void *dbuf = NULL;
+    int depth_bits;
+
+    if (argc < 2 || !argv[1][0]) {
+        fprintf(stderr, "usage: %s OUTPUT_PREFIX\n", argc > 0 ? argv[0] : "scene");
+        exit(2);
+    }
+    memset(&S, 0, sizeof S);
+    S.prefix = argv[1];
+    S.width = opts->width;
+    S.height = opts->height;
+    S.format = opts->format ? opts->format : OSMESA_RGBA;
+    S.bpp = format_bpp(S.format);
+    if (!S.bpp) fail("unsupported OSMesa format");
+    if (S.width <= 0 || S.height <= 0) fail("bad buffer size");
+    S.row_pixels = opts->row_length > 0 ? opts->row_length : S.width;
+    if (S.row_pixels < S.width) fail("row_length smaller than width");
+    S.y_up = opts->y_up == 0 ? 0 : 1;   /* -1: Mesa's default, which is 1 */
+    depth_bits = opts->depth_bits < 0 ? 24 : opts->depth_bits;
+
+    S.buffer_bytes = (size_t)S.row_pixels * S.height * S.bpp;
+    S.buffer = (unsigned char *)malloc(S.buffer_bytes + GUARD_BYTES);
+    if (!S.buffer) fail("out of memory");
+    memset(S.buffer, CANARY, S.buffer_bytes + GUARD_BYTES);
+
+    S.ctx = OSMesaCreateContextExt(S.format, depth_bits, 0, 0, NULL);
+    if (!S.ctx) {
+        S.refused = "create";
+        return -1;
+    }
+    if (!OSMesaMakeCurrent(S.ctx, S.buffer, GL_UNSIGNED_BYTE, S.width, S.height)) {
+        S.refused = "makecurrent";
+        return -1;
+    }
+    if (opts->row_length > 0)
+        OSMesaPixelStore(OSMESA_ROW_LENGTH, opts->row_length);
+    if (opts->y_up >= 0)
+        OSMesaPixelStore(OSMESA_Y_UP, opts->y_up ? 1 : 0);
+
+    glViewport(0, 0, S.width, S.height);
+    scene_clear();
+
+    /* Remember what a cleared depth value looks like (for coverage). */
+    glFinish();
+    if (OSMesaGetDepthBuffer(S.ctx, &dw, &dh, &dbytes, &dbuf) && dbuf && dbytes > 0) {
+        S.has_depth = 1;
+        S.cleared_depth = read_depth_value((const unsigned char *)dbuf, dbytes);
+    }
+    return 0;
+}
+
+void scene_clear(void)
+{
+    glClearColor(SCENE_KEY_R / 255.0f, SCENE_KEY_G / 255.0f, SCENE_KEY_B / 255.0f,
+                 SCENE_KEY_A / 255.0f);
+    glClearDepth(1.0);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+}
+
+void scene_ortho_pixels(void)
+{
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glOrtho(0.0, (double)S.width, 0.0, (double)S.height, -1.0, 1.0);
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+}
+
+static unsigned int lcg_state = 12345u;
+
+void scene_srand(unsigned int seed) { lcg_state = seed; }
+
+unsigned scene_rand(void)
+{
+    lcg_state = lcg_state * 1103515245u + 12345u;
+    return (lcg_state >> 1) & 0x7fffffffu;
+}
+
+float scene_randf(float lo, float hi)
+{
+    /* 24 random bits -> exactly representable fraction in [0,1) */
+    float f = (float)(scene_rand() >> 7) / 16777216.0f;
+    return lo + (hi - lo) * f;
+}
+
+static void write_info_line(FILE *f, int readpixels)
+{
+    static const struct { GLenum e; const char *n; } gl_ints[] = {
+        { GL_RED_BITS, "red_bits" }, { GL_GREEN_BITS, "green_bits" },
+        { GL_BLUE_BITS, "blue_bits" }, { GL_ALPHA_BITS, "alpha_bits" },
+        { GL_DEPTH_BITS, "depth_bits" }, { GL_STENCIL_BITS, "stencil_bits" },
+    };
+    static const struct { GLint e; const char *n; } os_ints[] = {
+        { OSMESA_WIDTH, "osmesa_width" }, { OSMESA_HEIGHT, "osmesa_height" },
+        { OSMESA_FORMAT, "osmesa_format" }, { OSMESA_TYPE, "osmesa_type" },
+        { OSMESA_ROW_LENGTH, "osmesa_row_length" }, { OSMESA_Y_UP, "osmesa_y_up" },
+    };
+    size_t i;
+    fprintf(f, "info");
+    if (S.refused) {
+        fprintf(f, " refused=%s", S.refused);
+    } else if (readpixels) {
+        fprintf(f, " readpixels=1");
+    } else {
+        GLenum err = glGetError();   /* first pending GL error of the scene */
+        fprintf(f, " gl_error=0x%04x", (unsigned)err);
+        for (i = 0; i < sizeof gl_ints / sizeof gl_ints[0]; i++) {
+            GLint v = -1;
+            glGetIntegerv(gl_ints[i].e, &v);
+            fprintf(f, " %s=%d", gl_ints[i].n, (int)v);
+        }
+        for (i = 0; i < sizeof os_ints / sizeof os_ints[0]; i++) {
+            GLint v = -1;
+            OSMesaGetIntegerv(os_ints[i].e, &v);
+            fprintf(f, " %s=%d", os_ints[i].n, (int)v);
+        }
+    }
+    fprintf(f, "\n");
+}
+
+static FILE *open_output(const char *suffix)
+{
+    size_t n = strlen(S.prefix) + strlen(suffix) + 1;
+    char *path = (char *)malloc(n);
+    FILE *f;
+    if (!path) fail("out of memory");
+    snprintf(path, n, "%s%s", S.prefix, suffix);
+    f = fopen(path, "wb");
+    if (!f) {
+        fprintf(stderr, "scene: cannot write %s\n", path);
+        exit(2);
+    }
+    free(path);
+    return f;
+}
+
+static void close_output(FILE *f)
+{
+    if (ferror(f) || fclose(f) != 0) fail("write error");
+}
+
+void scene_readpixels_check(void)
+{
+    size_t row = (size_t)S.width * 4;
+    unsigned char *px = (unsigned char *)malloc(row * S.height);
+    FILE *f;
+    int y;
+    if (S.refused) { free(px); return; }
+    if (!px) fail("out of memory");
+    memset(px, 0, row * S.height);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, S.width, S.height, GL_RGBA, GL_UNSIGNED_BYTE, px);
+    f = open_output(".readpixels");
+    fprintf(f, "GLFX1 %d %d %d %d %d %d %u %d\n", S.width, S.height,
+            format_has_alpha(S.format) ? 4 : 3, 0, 0, 0, 0u, 0);
+    write_info_line(f, 1);
+    for (y = S.height - 1; y >= 0; y--)          /* GL rows are bottom-up */
+        fwrite(px + (size_t)y * row, 1, row, f);
+    close_output(f);
+    free(px);
+}
+
+/* scene_end after a refused scene_begin_try: an all-KEY image. */
+static int end_refused(void)
+{
+    static const unsigned char key[4] = {SCENE_KEY_R, SCENE_KEY_G, SCENE_KEY_B, SCENE_KEY_A};
+    FILE *f = open_output(".glfx");
+    int i;
+    fprintf(f, "GLFX1 %d %d %d %d %d %d %u %d\n", S.width, S.height,
+            format_has_alpha(S.format) ? 4 : 3, 0, 0, 0, 0u, 0);
+    write_info_line(f, 0);
+    for (i = 0; i < S.width * S.height; i++) {
+        unsigned char px[4];
+        memcpy(px, key, 4);
+        if (!format_has_alpha(S.format)) px[3] = 255;
+        fwrite(px, 1, 4, f);
+    }
+    close_output(f);
+    if (S.ctx) OSMesaDestroyContext(S.ctx);
+    free(S.buffer);
+    memset(&S, 0, sizeof S);
+    return 0;
+}
+
+int scene_end(void)
+{
+    GLint dw = 0, dh = 0, dbytes = 0;
+    void *dbuf = NULL;
+    int guard_damage = 0;
+    size_t i, row_bytes = (size_t)S.row_pixels * S.bpp;
+    unsigned char *rgba;
+    FILE *f;
+    int x, y;
+
+    if (S.refused)
+        return end_refused();
+
+    glFinish();
+
+    /* Bytes outside the image area must be untouched. */
+    for (y = 0; y < S.height; y++)
+        for (i = (size_t)S.width * S.bpp; i < row_bytes; i++)
+            guard_damage += S.buffer[(size_t)y * row_bytes + i] != CANARY;
+    for (i = 0; i < GUARD_BYTES; i++)
+        guard_damage += S.buffer[S.buffer_bytes + i] != CANARY;
+
+    if (!(S.has_depth && OSMesaGetDepthBuffer(S.ctx, &dw, &dh, &dbytes, &dbuf) && dbuf &&
+          dbytes > 0)) {
+        dw = dh = dbytes = 0;
+        dbuf = NULL;
+    }
+
+    f = open_output(".glfx");
+    fprintf(f, "GLFX1 %d %d %d %d %d %d %u %d\n", S.width, S.height,
+            format_has_alpha(S.format) ? 4 : 3, (int)dw, (int)dh, (int)dbytes,
+            S.cleared_depth, guard_damage);
+    write_info_line(f, 0);
+
+    rgba = (unsigned char *)malloc((size_t)S.width * 4);
+    if (!rgba) fail("out of memory");
+    for (y = 0; y < S.height; y++) {             /* output row 0 = top */
+        int src_row = S.y_up ? S.height - 1 - y : y;
+        const unsigned char *src = S.buffer + (size_t)src_row * row_bytes;
+        for (x = 0; x < S.width; x++)
+            decode_pixel(src + (size_t)x * S.bpp, rgba + (size_t)x * 4);
+        fwrite(rgba, 1, (size_t)S.width * 4, f);
+    }
+    free(rgba);
+
+    /* Mesa's depth buffer memory is bottom row first; write top row first. */
+    for (y = dh - 1; y >= 0; y--)
+        fwrite((const unsigned char *)dbuf + (size_t)y * dw * dbytes, 1,
+               (size_t)dw * dbytes, f);
+    close_output(f);
+
+    OSMesaMakeCurrent(NULL, NULL, 0, 0, 0);
+    OSMesaDestroyContext(S.ctx);
+    free(S.buffer);
+    memset(&S, 0, sizeof S);
+    return 0;
+}

@@ -1,0 +1,15 @@
+#!/usr/bin/env bash
+# Installs what libglfixed needs to build and to compare with Mesa, from
+# Debian 12's packages. Run as root (or it uses sudo).
+set -euo pipefail
+packages=(
+  build-essential cmake pkg-config
+  libglm-dev libgtest-dev libpng-dev
+  libosmesa6-dev libglu1-mesa-dev   # Mesa's OSMesa: the reference renderer
+  khronos-api                       # gl.xml, for tools/gen_gl_header.py
+)
+sudo=""
+[ "$(id -u)" -eq 0 ] || sudo="sudo"
+export DEBIAN_FRONTEND=noninteractive
+$sudo apt-get update -qq
+$sudo apt-get install -y -qq --no-install-recommends "${packages[@]}"

@@ -84,6 +84,19 @@ bool queryState(Context& ctx, GLenum pname, StateValue& out) {
       out.set({n.x, n.y, n.z}, Kind::kNormalized);
       return true;
     }
+    case GL_CURRENT_TEXTURE_COORDS: {
+      const glm::vec4& t = ctx.current.texCoord[0];
+      out.set({t.x, t.y, t.z, t.w});
+      return true;
+    }
+    case GL_CURRENT_SECONDARY_COLOR: {
+      const glm::vec4& c = ctx.current.secondaryColor;
+      out.set({c.r, c.g, c.b, c.a}, Kind::kNormalized);
+      return true;
+    }
+    case GL_CURRENT_FOG_COORD: out.set({ctx.current.fogCoord}); return true;
+    case GL_CURRENT_INDEX: out.set({ctx.current.colorIndex}); return true;
+    case GL_EDGE_FLAG: out.set({double(ctx.current.edgeFlag)}); return true;
     case GL_SUBPIXEL_BITS: out.set({double(kSubpixelBits)}); return true;
     case GL_RED_BITS: case GL_GREEN_BITS: case GL_BLUE_BITS: out.set({8.0}); return true;
     case GL_ALPHA_BITS: out.set({hasAlpha ? 8.0 : 0.0}); return true;

@@ -133,6 +133,27 @@ GLAPI void APIENTRY glMultMatrixd(const GLdouble* m) {
   if (ctx && m) multiplyCurrent(*ctx, fromDoubles(m));
 }
 
+// GL 1.3: the same with row-major input (GL 2.1 §2.11.2).
+GLAPI void APIENTRY glLoadTransposeMatrixf(const GLfloat* m) {
+  Context* ctx = api::contextOutsideBeginEnd();
+  if (ctx && m) loadCurrent(*ctx, glm::transpose(glm::make_mat4(m)));
+}
+
+GLAPI void APIENTRY glLoadTransposeMatrixd(const GLdouble* m) {
+  Context* ctx = api::contextOutsideBeginEnd();
+  if (ctx && m) loadCurrent(*ctx, glm::transpose(fromDoubles(m)));
+}
+
+GLAPI void APIENTRY glMultTransposeMatrixf(const GLfloat* m) {
+  Context* ctx = api::contextOutsideBeginEnd();
+  if (ctx && m) multiplyCurrent(*ctx, glm::transpose(glm::make_mat4(m)));
+}
+
+GLAPI void APIENTRY glMultTransposeMatrixd(const GLdouble* m) {
+  Context* ctx = api::contextOutsideBeginEnd();
+  if (ctx && m) multiplyCurrent(*ctx, glm::transpose(fromDoubles(m)));
+}
+
 GLAPI void APIENTRY glPushMatrix(void) {
   Context* ctx = api::contextOutsideBeginEnd();
   if (!ctx) return;

@@ -12,6 +12,12 @@ namespace glfixed {
 struct CurrentAttrib {
   glm::vec4 color{1, 1, 1, 1};
   glm::vec3 normal{0, 0, 1};
+  glm::vec4 texCoord[8] = {glm::vec4(0, 0, 0, 1), glm::vec4(0, 0, 0, 1), glm::vec4(0, 0, 0, 1), glm::vec4(0, 0, 0, 1),
+                           glm::vec4(0, 0, 0, 1), glm::vec4(0, 0, 0, 1), glm::vec4(0, 0, 0, 1), glm::vec4(0, 0, 0, 1)};
+  glm::vec4 secondaryColor{0, 0, 0, 1};
+  float fogCoord = 0;
+  float colorIndex = 1;
+  bool edgeFlag = true;
 };
 
 // GL_TRANSFORM_BIT.

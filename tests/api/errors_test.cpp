@@ -16,10 +16,14 @@ using ErrorTest = GLTest;
 constexpr GLenum kBogus = 0xFFFF;
 constexpr GLenum kBogus2 = 0x1234;
 
+// T(1,2,3) * S(2,3,4), column-major.
+const double kScaleThenTranslate[16] = {2, 0, 0, 0, 0, 3, 0, 0, 0, 0, 4, 0, 1, 2, 3, 1};
+
 // ---- GL_INVALID_ENUM --------------------------------------------------------------
 
 TEST_F(ErrorTest, EnableDisableIsEnabledOfABadCap) {
-  for (GLenum cap : {kBogus, kBogus2, static_cast<GLenum>(GL_DEPTH_FUNC), static_cast<GLenum>(GL_TRIANGLES)}) {
+  for (GLenum cap :
+       {kBogus, kBogus2, static_cast<GLenum>(GL_DEPTH_FUNC), static_cast<GLenum>(GL_TRIANGLES)}) {
     SCOPED_TRACE(::testing::Message() << "cap 0x" << std::hex << cap);
     glEnable(cap);
     EXPECT_GL_ERROR(GL_INVALID_ENUM);
@@ -44,7 +48,7 @@ TEST_F(ErrorTest, MatrixModeBadEnum) {
 
 TEST_F(ErrorTest, DepthFuncBadEnum) {
   glDepthFunc(GL_GEQUAL);
-  for (GLenum f : {GL_NEVER - 1, GL_ALWAYS + 1, kBogus}) {
+  for (GLenum f : {static_cast<GLenum>(GL_NEVER - 1), static_cast<GLenum>(GL_ALWAYS + 1), kBogus}) {
     glDepthFunc(f);
     EXPECT_GL_ERROR(GL_INVALID_ENUM);
   }
@@ -142,14 +146,17 @@ TEST_F(ErrorTest, GetOfABadPname) {
 TEST_F(ErrorTest, ReadPixelsBadFormatOrType) {
   unsigned char out[64];
   std::memset(out, 0x3C, sizeof out);
-  glReadPixels(0, 0, 2, 2, kBogus, GL_UNSIGNED_BYTE, out);
-  EXPECT_GL_ERROR(GL_INVALID_ENUM);
-  glReadPixels(0, 0, 2, 2, GL_TRIANGLES /* 4 */, GL_UNSIGNED_BYTE, out);
-  EXPECT_GL_ERROR(GL_INVALID_ENUM);
-  glReadPixels(0, 0, 2, 2, GL_RGBA, kBogus, out);
-  EXPECT_GL_ERROR(GL_INVALID_ENUM);
-  glReadPixels(0, 0, 2, 2, GL_RGBA, GL_RGBA, out);
-  EXPECT_GL_ERROR(GL_INVALID_ENUM);
+  for (GLenum type : {kBogus, kBogus2, static_cast<GLenum>(GL_RGBA)}) {
+    glReadPixels(0, 0, 2, 2, GL_RGBA, type, out);
+    EXPECT_GL_ERROR(GL_INVALID_ENUM) << "type 0x" << std::hex << type;
+  }
+  // §2.5, §3.6.4: a format not in table 3.6 is GL_INVALID_ENUM. Mesa 22 says
+  // GL_INVALID_OPERATION for a bad format with a valid type.
+  for (GLenum format : {kBogus, kBogus2, static_cast<GLenum>(GL_DEPTH_TEST)}) {
+    glReadPixels(0, 0, 2, 2, format, GL_UNSIGNED_BYTE, out);
+    EXPECT_GL_ERROR(kTestingAgainstMesa ? GL_INVALID_OPERATION : GL_INVALID_ENUM)
+        << "format 0x" << std::hex << format;
+  }
   for (unsigned char c : out) ASSERT_EQ(c, 0x3C) << "a refused glReadPixels wrote to memory";
 }
 
@@ -182,20 +189,20 @@ TEST_F(ErrorTest, ViewportNegativeSize) {
 
 TEST_F(ErrorTest, FrustumBadValues) {
   const double bad[][6] = {
-      {-1, 1, -1, 1, 0, 10},    // near == 0
-      {-1, 1, -1, 1, -1, 10},   // near < 0
-      {-1, 1, -1, 1, 1, 0},     // far == 0
-      {-1, 1, -1, 1, 1, -10},   // far < 0
-      {-1, 1, -1, 1, 2, 2},     // near == far
-      {1, 1, -1, 1, 1, 10},     // left == right
-      {-1, 1, 0.5, 0.5, 1, 10}, // bottom == top
+      {-1, 1, -1, 1, 0, 10},     // near == 0
+      {-1, 1, -1, 1, -1, 10},    // near < 0
+      {-1, 1, -1, 1, 1, 0},      // far == 0
+      {-1, 1, -1, 1, 1, -10},    // far < 0
+      {-1, 1, -1, 1, 2, 2},      // near == far
+      {1, 1, -1, 1, 1, 10},      // left == right
+      {-1, 1, 0.5, 0.5, 1, 10},  // bottom == top
   };
   for (GLenum mode : {GL_MODELVIEW, GL_PROJECTION}) {
     glMatrixMode(mode);
-    glLoadMatrixd(kBogus == 0 ? nullptr : std::array<double, 16>{2, 0, 0, 0, 0, 3, 0, 0, 0, 0, 4, 0, 1, 2, 3, 1}.data());
+    glLoadMatrixd(kScaleThenTranslate);
     for (const auto& c : bad) {
-      SCOPED_TRACE(::testing::Message() << "glFrustum(" << c[0] << ", " << c[1] << ", " << c[2] << ", " << c[3]
-                                        << ", " << c[4] << ", " << c[5] << ")");
+      SCOPED_TRACE(::testing::Message() << "glFrustum(" << c[0] << ", " << c[1] << ", " << c[2] << ", "
+                                        << c[3] << ", " << c[4] << ", " << c[5] << ")");
       glFrustum(c[0], c[1], c[2], c[3], c[4], c[5]);
       EXPECT_GL_ERROR(GL_INVALID_VALUE);
     }
@@ -206,16 +213,16 @@ TEST_F(ErrorTest, FrustumBadValues) {
 
 TEST_F(ErrorTest, OrthoBadValues) {
   const double bad[][6] = {
-      {1, 1, -1, 1, -1, 1},    // left == right
-      {-1, 1, 2, 2, -1, 1},    // bottom == top
-      {-1, 1, -1, 1, 3, 3},    // near == far
+      {1, 1, -1, 1, -1, 1},  // left == right
+      {-1, 1, 2, 2, -1, 1},  // bottom == top
+      {-1, 1, -1, 1, 3, 3},  // near == far
       {0, 0, 0, 0, 0, 0},
   };
   glMatrixMode(GL_PROJECTION);
   glTranslatef(1, 2, 3);
   for (const auto& c : bad) {
-    SCOPED_TRACE(::testing::Message() << "glOrtho(" << c[0] << ", " << c[1] << ", " << c[2] << ", " << c[3] << ", "
-                                      << c[4] << ", " << c[5] << ")");
+    SCOPED_TRACE(::testing::Message() << "glOrtho(" << c[0] << ", " << c[1] << ", " << c[2] << ", " << c[3]
+                                      << ", " << c[4] << ", " << c[5] << ")");
     glOrtho(c[0], c[1], c[2], c[3], c[4], c[5]);
     EXPECT_GL_ERROR(GL_INVALID_VALUE);
   }
@@ -238,7 +245,8 @@ TEST_F(ErrorTest, ClearBadBits) {
   glClearColor(1, 0, 0, 1);
   glClear(GL_COLOR_BUFFER_BIT);
   glClearColor(0, 1, 0, 1);
-  const GLbitfield bad[] = {0x1, 0x80000000u, GL_COLOR_BUFFER_BIT | 0x2, GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | 0x10000};
+  const GLbitfield bad[] = {0x1, 0x80000000u, GL_COLOR_BUFFER_BIT | 0x2,
+                            GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | 0x10000};
   for (GLbitfield mask : bad) {
     glClear(mask);
     EXPECT_GL_ERROR(GL_INVALID_VALUE) << "mask 0x" << std::hex << mask;
@@ -254,10 +262,10 @@ TEST_F(ErrorTest, ClearBadBits) {
 // ---- the error flag ---------------------------------------------------------------
 
 TEST_F(ErrorTest, TheFirstErrorIsKeptUntilRead) {
-  glEnable(kBogus);            // GL_INVALID_ENUM
-  glViewport(0, 0, -1, -1);    // GL_INVALID_VALUE
-  glEnd();                     // GL_INVALID_OPERATION
-  glPopMatrix();               // GL_STACK_UNDERFLOW
+  glEnable(kBogus);          // GL_INVALID_ENUM
+  glViewport(0, 0, -1, -1);  // GL_INVALID_VALUE
+  glEnd();                   // GL_INVALID_OPERATION
+  glPopMatrix();             // GL_STACK_UNDERFLOW
   EXPECT_GL_ERROR(GL_INVALID_ENUM);
   EXPECT_NO_GL_ERROR() << "glGetError clears the flag";
   glPopMatrix();
@@ -312,21 +320,48 @@ class BeginEndTest : public GLTest {
   }
 };
 
+// §2.6.3: the only commands allowed between glBegin and glEnd are Vertex,
+// Color, SecondaryColor, Index, Normal, TexCoord, MultiTexCoord, VertexAttrib,
+// FogCoord, ArrayElement, EvalCoord, EvalPoint, Material, CallList(s) and
+// EdgeFlag. Each is tried on its own, inside a primitive.
 TEST_F(BeginEndTest, AllowedCommandsRaiseNoError) {
-  GLfloat red[4] = {1, 0, 0, 1};
-  glBegin(GL_TRIANGLES);
-  glColor3f(1, 0, 0);
-  glColor4ub(1, 2, 3, 4);
-  glNormal3f(0, 1, 0);
-  glTexCoord2f(0.5f, 0.5f);
-  glEdgeFlag(GL_TRUE);
-  glMaterialfv(GL_FRONT, GL_DIFFUSE, red);
-  glMaterialf(GL_FRONT_AND_BACK, GL_SHININESS, 10.0f);
-  glVertex2f(0, 0);
-  glVertex3f(1, 0, 0);
-  glVertex4f(0, 1, 0, 1);
-  glEnd();
-  EXPECT_NO_GL_ERROR();
+  static const GLfloat red[4] = {1, 0, 0, 1};
+  static const GLubyte noList = 0;
+  const struct {
+    const char* name;
+    std::function<void()> call;
+  } allowed[] = {
+      {"glVertex2f", [] { glVertex2f(0, 0); }},
+      {"glVertex3f", [] { glVertex3f(1, 0, 0); }},
+      {"glVertex4f", [] { glVertex4f(0, 1, 0, 1); }},
+      {"glColor3f", [] { glColor3f(1, 0, 0); }},
+      {"glColor4ub", [] { glColor4ub(1, 2, 3, 4); }},
+      {"glNormal3f", [] { glNormal3f(0, 1, 0); }},
+      {"glMaterialfv", [] { glMaterialfv(GL_FRONT, GL_DIFFUSE, red); }},
+      {"glMaterialf", [] { glMaterialf(GL_FRONT_AND_BACK, GL_SHININESS, 10.0f); }},
+      {"glTexCoord2f", [] { glTexCoord2f(0.5f, 0.5f); }},
+      {"glMultiTexCoord2f", [] { glMultiTexCoord2f(GL_TEXTURE0, 0.5f, 0.5f); }},
+      {"glEdgeFlag", [] { glEdgeFlag(GL_TRUE); }},
+      {"glSecondaryColor3f", [] { glSecondaryColor3f(0.1f, 0.2f, 0.3f); }},
+      {"glFogCoordf", [] { glFogCoordf(1.0f); }},
+      {"glIndexi", [] { glIndexi(0); }},
+      {"glVertexAttrib4f", [] { glVertexAttrib4f(1, 0, 0, 0, 1); }},
+      {"glArrayElement", [] { glArrayElement(0); }},
+      {"glEvalCoord1f", [] { glEvalCoord1f(0.0f); }},
+      {"glEvalPoint1", [] { glEvalPoint1(0); }},
+      {"glCallList", [] { glCallList(12345); }},
+      {"glCallLists", [] { glCallLists(1, GL_UNSIGNED_BYTE, &noList); }},
+  };
+  for (const auto& a : allowed) {
+    // Vertex arrays, evaluators and display lists come in later issues: a
+    // command the library does not implement yet has no address and is
+    // checked once it has one.
+    if (!OSMesaGetProcAddress(a.name)) continue;
+    glBegin(GL_POINTS);
+    a.call();
+    glEnd();
+    EXPECT_EQ(DrainErrors(), static_cast<GLenum>(GL_NO_ERROR)) << a.name << " between glBegin and glEnd";
+  }
 }
 
 TEST_F(BeginEndTest, AttributesSetInsideAreCurrentAfterEnd) {
@@ -351,7 +386,8 @@ TEST_F(BeginEndTest, AttributesSetInsideAreCurrentAfterEnd) {
 }
 
 TEST_F(BeginEndTest, NestedBegin) {
-  RunRefused({"glBegin", nullptr, [] { glBegin(GL_POINTS); }, [] {
+  RunRefused({"glBegin", nullptr, [] { glBegin(GL_POINTS); },
+              [] {
                 // The outer glBegin was closed by the one glEnd.
                 glEnd();
                 EXPECT_GL_ERROR(GL_INVALID_OPERATION);
@@ -375,9 +411,9 @@ TEST_F(BeginEndTest, MatrixCommands) {
       {"glMatrixMode", setup, [] { glMatrixMode(GL_PROJECTION); }, unchanged},
       {"glLoadIdentity", setup, [] { glLoadIdentity(); }, unchanged},
       {"glLoadMatrixf", setup, [mf] { glLoadMatrixf(mf); }, unchanged},
-      {"glLoadMatrixd", setup, [] { glLoadMatrixd(kA_identityish()); }, unchanged},
+      {"glLoadMatrixd", setup, [] { glLoadMatrixd(kScaleThenTranslate); }, unchanged},
       {"glMultMatrixf", setup, [mf] { glMultMatrixf(mf); }, unchanged},
-      {"glMultMatrixd", setup, [] { glMultMatrixd(kA_identityish()); }, unchanged},
+      {"glMultMatrixd", setup, [] { glMultMatrixd(kScaleThenTranslate); }, unchanged},
       {"glTranslatef", setup, [] { glTranslatef(1, 2, 3); }, unchanged},
       {"glTranslated", setup, [] { glTranslated(1, 2, 3); }, unchanged},
       {"glRotatef", setup, [] { glRotatef(30, 0, 0, 1); }, unchanged},
@@ -451,8 +487,8 @@ TEST_F(BeginEndTest, EnableDisableIsEnabled) {
               [] { EXPECT_EQ(glIsEnabled(GL_DITHER), GL_TRUE); }});
   RunRefused({"glEnable(GL_LIGHTING)", nullptr, [] { glEnable(GL_LIGHTING); },
               [] { EXPECT_EQ(glIsEnabled(GL_LIGHTING), GL_FALSE); }});
-  RunRefused({"glIsEnabled", nullptr, [] { EXPECT_EQ(glIsEnabled(GL_DITHER), GL_FALSE) << "returns 0 inside"; },
-              nullptr});
+  RunRefused({"glIsEnabled", nullptr,
+              [] { EXPECT_EQ(glIsEnabled(GL_DITHER), GL_FALSE) << "returns 0 inside"; }, nullptr});
 }
 
 TEST_F(BeginEndTest, Queries) {
@@ -492,7 +528,8 @@ TEST_F(BeginEndTest, Queries) {
 // raises GL_INVALID_OPERATION and, as a refused command, returns 0 without
 // reading the flag.
 TEST_F(BeginEndTest, GetErrorInsideReturnsZero) {
-  RunRefused({"glGetError", nullptr, [] { EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR)); }, nullptr});
+  RunRefused(
+      {"glGetError", nullptr, [] { EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR)); }, nullptr});
 }
 
 TEST_F(BeginEndTest, GetErrorInsideLeavesAnEarlierError) {
@@ -517,8 +554,8 @@ TEST_F(BeginEndTest, DepthAndPolygonState) {
               [] { EXPECT_EQ(GetBool(GL_DEPTH_WRITEMASK), GL_TRUE); }});
   RunRefused({"glCullFace", nullptr, [] { glCullFace(GL_FRONT); },
               [] { EXPECT_EQ(GetInt(GL_CULL_FACE_MODE), GL_BACK); }});
-  RunRefused({"glFrontFace", nullptr, [] { glFrontFace(GL_CW); },
-              [] { EXPECT_EQ(GetInt(GL_FRONT_FACE), GL_CCW); }});
+  RunRefused(
+      {"glFrontFace", nullptr, [] { glFrontFace(GL_CW); }, [] { EXPECT_EQ(GetInt(GL_FRONT_FACE), GL_CCW); }});
   RunRefused({"glShadeModel", nullptr, [] { glShadeModel(GL_FLAT); },
               [] { EXPECT_EQ(GetInt(GL_SHADE_MODEL), GL_SMOOTH); }});
   RunRefused({"glProvokingVertex", nullptr, [] { glProvokingVertex(GL_FIRST_VERTEX_CONVENTION); },

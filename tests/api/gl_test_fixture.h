@@ -114,7 +114,13 @@ class GLTest : public ::testing::Test {
     buffer_ = nullptr;
   }
 
-  unsigned char* pixels() const { return static_cast<unsigned char*>(buffer_); }
+  // The client colour buffer, after glFinish: OSMesa need not have written
+  // the rendering into client memory before then (Mesa's gallium OSMesa
+  // copies it there at glFinish/glFlush).
+  unsigned char* pixels() const {
+    glFinish();
+    return static_cast<unsigned char*>(buffer_);
+  }
 
   OSMesaContext ctx_ = nullptr;
   void* buffer_ = nullptr;

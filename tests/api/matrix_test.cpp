@@ -74,7 +74,8 @@ TEST_F(MatrixTest, RotateAboutTheAxes) {
   const double axes[][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {-1, 0, 0}, {0, -1, 0}, {0, 0, -1}};
   for (double a : angles)
     for (const auto& ax : axes) {
-      SCOPED_TRACE(::testing::Message() << "angle " << a << " axis " << ax[0] << "," << ax[1] << "," << ax[2]);
+      SCOPED_TRACE(::testing::Message()
+                   << "angle " << a << " axis " << ax[0] << "," << ax[1] << "," << ax[2]);
       glLoadIdentity();
       glRotatef(static_cast<float>(a), static_cast<float>(ax[0]), static_cast<float>(ax[1]),
                 static_cast<float>(ax[2]));
@@ -89,7 +90,8 @@ TEST_F(MatrixTest, RotateAboutTheAxes) {
 // §2.11.2: the axis need not be of unit length; it is normalised.
 TEST_F(MatrixTest, RotateNormalisesTheAxis) {
   const double cases[][4] = {
-      {30, 1, 2, 3}, {-72.5, 0.2, -0.3, 0.1}, {135, 5, 5, 0}, {10, 0, 3, 4}, {90, 100, 0, 0}, {45, 0, 0, 0.01},
+      {30, 1, 2, 3}, {-72.5, 0.2, -0.3, 0.1}, {135, 5, 5, 0},
+      {10, 0, 3, 4}, {90, 100, 0, 0},         {45, 0, 0, 0.01},
   };
   for (const auto& c : cases) {
     SCOPED_TRACE(::testing::Message() << "angle " << c[0] << " axis " << c[1] << "," << c[2] << "," << c[3]);
@@ -99,7 +101,8 @@ TEST_F(MatrixTest, RotateNormalisesTheAxis) {
     EXPECT_TRUE(MatrixIs(GL_MODELVIEW_MATRIX, RotationRef(c[0], c[1], c[2], c[3])));
     glLoadMatrixd(kA);
     glRotated(c[0], c[1], c[2], c[3]);
-    EXPECT_TRUE(MatrixIs(GL_MODELVIEW_MATRIX, FromColumnMajor(kA) * RotationRef(c[0], c[1], c[2], c[3]), 1e-5));
+    EXPECT_TRUE(
+        MatrixIs(GL_MODELVIEW_MATRIX, FromColumnMajor(kA) * RotationRef(c[0], c[1], c[2], c[3]), 1e-5));
   }
   EXPECT_NO_GL_ERROR();
 }
@@ -137,7 +140,8 @@ TEST_F(MatrixTest, ACompositeTransformMultipliesInCallOrder) {
   glRotatef(60, 0, 0, 1);
   glScalef(2, 2, 2);
   glTranslated(-1, 0, 0.5);
-  Mat4 expected = TranslationRef(1, 2, 3) * RotationRef(60, 0, 0, 1) * ScaleRef(2, 2, 2) * TranslationRef(-1, 0, 0.5);
+  Mat4 expected =
+      TranslationRef(1, 2, 3) * RotationRef(60, 0, 0, 1) * ScaleRef(2, 2, 2) * TranslationRef(-1, 0, 0.5);
   EXPECT_TRUE(MatrixIs(GL_MODELVIEW_MATRIX, expected));
   EXPECT_NO_GL_ERROR();
 }
@@ -238,7 +242,8 @@ void OverflowAndUnderflow(GLenum mode, GLenum matrix, GLenum depth, GLenum maxDe
 }
 
 TEST_F(MatrixTest, ModelviewOverflowAndUnderflow) {
-  OverflowAndUnderflow(GL_MODELVIEW, GL_MODELVIEW_MATRIX, GL_MODELVIEW_STACK_DEPTH, GL_MAX_MODELVIEW_STACK_DEPTH);
+  OverflowAndUnderflow(GL_MODELVIEW, GL_MODELVIEW_MATRIX, GL_MODELVIEW_STACK_DEPTH,
+                       GL_MAX_MODELVIEW_STACK_DEPTH);
   EXPECT_EQ(GetInt(GL_PROJECTION_STACK_DEPTH), 1);
 }
 

@@ -305,7 +305,10 @@ int main(int argc, char **argv) {
                         std::to_string(ga.guard_damage));
         pass = false;
     }
+    if (ma.info.count("mesa_rgb_via_rgba"))
+        notes.push_back("Mesa side: OSMESA_RGB emulated with RGBA (llvmpipe RGB bug)");
     for (const auto &kv : ma.info) {
+        if (kv.first == "mesa_rgb_via_rgba") continue;
         auto it = ga.info.find(kv.first);
         std::string other = it == ga.info.end() ? "?" : it->second;
         if (other != kv.second) notes.push_back(kv.first + " " + kv.second + "/" + other);

@@ -13,8 +13,13 @@
 #   GLFX_OTHER_ENV    e.g. "GALLIUM_DRIVER=softpipe": run the second side on
 #                     Mesa with these variables instead of the drop-in
 #                     (for testing the comparison itself)
+#   GLFX_GLFIXED_ENV  extra VAR=value words for the drop-in runs only
+#                     (e.g. "LD_PRELOAD=libasan.so.8" for a sanitizer build)
 #   GLFX_OUT_DIR      output folder (default: out/ next to this script)
 #   GLFX_TIMEOUT      seconds per scene run (default 60)
+#   GLFX_RGB_RAW=1    do not work around llvmpipe's broken OSMESA_RGB output
+#                     (see scenes/scene.h)
+# Each scene run gets GLFX_SIDE=mesa or GLFX_SIDE=glfixed in its environment.
 set -u
 
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
@@ -37,7 +42,7 @@ while [ $# -gt 0 ]; do
         --side-by-side) sbs=1 ;;
         --scale) shift; scale="${1:-1}" ;;
         --list) printf '%s\n' "${all_scenes[@]}"; exit 0 ;;
-        -h|--help) sed -n '2,20p' "${BASH_SOURCE[0]}"; exit 0 ;;
+        -h|--help) awk 'NR > 1 && /^#/ { sub(/^# ?/, ""); print; next } NR > 1 { exit }' "${BASH_SOURCE[0]}"; exit 0 ;;
         -*) echo "run_scenes.sh: unknown option $1" >&2; exit 2 ;;
         *) selected+=("${1#scene_}") ;;
     esac
@@ -67,9 +72,11 @@ if [ -n "$other_env" ]; then
 else
     other_label="libglfixed drop-in ($(rel "$dropin"))"
     if [ ! -d "$dropin" ]; then
-        other_problem="drop-in folder $(rel "$dropin") does not exist (build target glfixed_dropin)"
+        other_problem="drop-in folder $(rel "$dropin") does not exist (build target glfixed_dropin or set GLFX_DROPIN_DIR)"
     elif [ ! -e "$dropin/libOSMesa.so.8" ]; then
         other_problem="no libOSMesa.so.8 in drop-in folder $(rel "$dropin")"
+    else
+        dropin="$(cd "$dropin" && pwd)"
     fi
 fi
 
@@ -92,7 +99,8 @@ for name in "${selected[@]}"; do
     mkdir -p "$dir"
     rm -f "$dir"/mesa.* "$dir"/glfixed.* "$dir"/diff*.png "$dir"/side_by_side.png
 
-    env -u LD_LIBRARY_PATH timeout "$timeout_s" "$exe" "$dir/mesa" >"$dir/mesa.log" 2>&1
+    env -u LD_LIBRARY_PATH GLFX_SIDE=mesa timeout "$timeout_s" "$exe" "$dir/mesa" \
+        >"$dir/mesa.log" 2>&1
     rc=$?
     if [ $rc -ne 0 ]; then
         fail_row "$name" "Mesa run failed: $(describe_rc $rc) (see $(rel "$dir")/mesa.log)"
@@ -105,7 +113,7 @@ for name in "${selected[@]}"; do
     fi
     if [ -n "$other_env" ]; then
         # shellcheck disable=SC2086  # word splitting of the variable list is intended
-        env -u LD_LIBRARY_PATH $other_env timeout "$timeout_s" "$exe" "$dir/glfixed" \
+        env -u LD_LIBRARY_PATH GLFX_SIDE=mesa $other_env timeout "$timeout_s" "$exe" "$dir/glfixed" \
             >"$dir/glfixed.log" 2>&1
         rc=$?
     else
@@ -116,7 +124,9 @@ for name in "${selected[@]}"; do
             fail_row "$name" "loader does not pick $(rel "$dropin")/libOSMesa.so.8 (got: ${resolved:-nothing})"
             continue
         fi
-        env LD_LIBRARY_PATH="$dropin" timeout "$timeout_s" "$exe" "$dir/glfixed" \
+        # shellcheck disable=SC2086
+        env LD_LIBRARY_PATH="$dropin" GLFX_SIDE=glfixed ${GLFX_GLFIXED_ENV:-} \
+            timeout "$timeout_s" "$exe" "$dir/glfixed" \
             >"$dir/glfixed.log" 2>&1
         rc=$?
     fi

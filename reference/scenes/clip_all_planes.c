@@ -12,15 +12,15 @@ int main(int argc, char **argv)
     glEnable(GL_DEPTH_TEST);
     glShadeModel(GL_SMOOTH);
     glBegin(GL_TRIANGLES);
-    glColor3f(1, 0, 0); glVertex3f(-9.0f, -6.0f, 0.5f);
-    glColor3f(0, 1, 0); glVertex3f(9.0f, -5.0f, -9.0f);
-    glColor3f(0, 0, 1); glVertex3f(0.5f, 9.0f, -3.0f);
+    glColor3f(1, 0, 0); glVertex3f(-3.0f, -1.2f, 0.5f);    /* behind the eye */
+    glColor3f(0, 1, 0); glVertex3f(5.0f, -3.0f, -9.0f);    /* past far, right, below */
+    glColor3f(0, 0, 1); glVertex3f(-0.2f, 2.0f, -3.0f);    /* above the top */
     glEnd();
     glBegin(GL_QUADS);
-    glColor3f(1, 1, 0); glVertex3f(-2.0f, 1.5f, -0.2f);
-    glColor3f(0, 1, 1); glVertex3f(3.0f, 2.5f, -8.0f);
-    glColor3f(1, 0, 1); glVertex3f(3.5f, -2.0f, -8.0f);
-    glColor3f(1, 1, 1); glVertex3f(-2.0f, -1.0f, -0.2f);
+    glColor3f(1, 1, 0); glVertex3f(-0.9f, 0.5f, -0.2f);
+    glColor3f(0, 1, 1); glVertex3f(4.0f, 1.2f, -8.0f);
+    glColor3f(1, 0, 1); glVertex3f(3.0f, -0.6f, -5.0f);
+    glColor3f(1, 1, 1); glVertex3f(-0.6f, -0.3f, -0.2f);
     glEnd();
     return scene_end();
 }

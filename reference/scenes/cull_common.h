@@ -34,11 +34,11 @@ static inline void cull_draw(void)
     glColor3f(0, 0, 1); glVertex2f(76, 100); glColor3f(1, 1, 0); glVertex2f(110, 100);
     glColor3f(1, 0, 1); glVertex2f(120, 84);
     glEnd();
-    glBegin(GL_TRIANGLE_STRIP);   /* 6 triangles; odd ones are wound the other way */
+    glBegin(GL_TRIANGLE_STRIP);   /* 6 triangles with a twist: they do not all face the same way */
     glColor3f(1, 0, 0); glVertex2f(4, 106);   glColor3f(0, 1, 0); glVertex2f(24, 124);
     glColor3f(0, 0, 1); glVertex2f(40, 108);  glColor3f(1, 1, 0); glVertex2f(56, 122);
-    glColor3f(0, 1, 1); glVertex2f(88, 104);  glColor3f(1, 0, 1); glVertex2f(90, 124);
-    glColor3f(1, 1, 1); glVertex2f(110, 108); glColor3f(1, 0.5f, 0); glVertex2f(124, 124);
+    glColor3f(0, 1, 1); glVertex2f(88, 124);  glColor3f(1, 0, 1); glVertex2f(90, 104);
+    glColor3f(1, 1, 1); glVertex2f(110, 124); glColor3f(1, 0.5f, 0); glVertex2f(124, 106);
     glEnd();
 }
 #endif

@@ -14,8 +14,10 @@ static struct {
     size_t buffer_bytes;       /* image part: row_pixels * height * bpp */
     int width, height;
     int row_pixels;            /* pixels per row in the client buffer */
-    int bpp;                   /* bytes per pixel of the client format */
-    GLenum format;
+    int bpp;                   /* bytes per pixel of the client buffer */
+    GLenum format;             /* format the scene asked for */
+    GLenum ctx_format;         /* format given to OSMesa (differs: RGB emulation) */
+    int rgb_via_rgba;          /* Mesa side of an RGB/BGR scene: rendered as RGBA (scene.c) */
     int y_up;                  /* orientation used to decode the buffer */
     int has_depth;
     unsigned int cleared_depth;
@@ -46,13 +48,14 @@ static int format_has_alpha(GLenum format)
 /* Decode one client-buffer pixel into RGBA. */
 static void decode_pixel(const unsigned char *p, unsigned char out[4])
 {
-    switch (S.format) {
+    switch (S.ctx_format) {
     case OSMESA_RGBA: out[0] = p[0]; out[1] = p[1]; out[2] = p[2]; out[3] = p[3]; break;
     case OSMESA_BGRA: out[0] = p[2]; out[1] = p[1]; out[2] = p[0]; out[3] = p[3]; break;
     case OSMESA_ARGB: out[0] = p[1]; out[1] = p[2]; out[2] = p[3]; out[3] = p[0]; break;
     case OSMESA_RGB:  out[0] = p[0]; out[1] = p[1]; out[2] = p[2]; out[3] = 255; break;
     case OSMESA_BGR:  out[0] = p[2]; out[1] = p[1]; out[2] = p[0]; out[3] = 255; break;
     }
+    if (!format_has_alpha(S.format)) out[3] = 255;
 }
 
 static unsigned int read_depth_value(const unsigned char *p, int bytes)
@@ -103,8 +106,20 @@ int scene_begin_try(int argc, char **argv, const scene_options *opts)
     S.width = opts->width;
     S.height = opts->height;
     S.format = opts->format ? opts->format : OSMESA_RGBA;
-    S.bpp = format_bpp(S.format);
-    if (!S.bpp) fail("unsupported OSMesa format");
+    if (!format_bpp(S.format)) fail("unsupported OSMesa format");
+    S.ctx_format = S.format;
+    {
+        /* Mesa 22.3 llvmpipe corrupts OSMESA_RGB renderings and refuses
+         * OSMESA_BGR at OSMesaMakeCurrent; on the Mesa side render RGBA and
+         * present it in the 3-byte layout (GLFX_RGB_RAW=1 disables this). */
+        const char *side = getenv("GLFX_SIDE"), *raw = getenv("GLFX_RGB_RAW");
+        if ((S.format == OSMESA_RGB || S.format == OSMESA_BGR) && side && strcmp(side, "mesa") == 0 &&
+            !(raw && raw[0] && strcmp(raw, "0") != 0)) {
+            S.rgb_via_rgba = 1;
+            S.ctx_format = OSMESA_RGBA;
+        }
+    }
+    S.bpp = format_bpp(S.ctx_format);
     if (S.width <= 0 || S.height <= 0) fail("bad buffer size");
     S.row_pixels = opts->row_length > 0 ? opts->row_length : S.width;
     if (S.row_pixels < S.width) fail("row_length smaller than width");
@@ -116,7 +131,7 @@ int scene_begin_try(int argc, char **argv, const scene_options *opts)
     if (!S.buffer) fail("out of memory");
     memset(S.buffer, CANARY, S.buffer_bytes + GUARD_BYTES);
 
-    S.ctx = OSMesaCreateContextExt(S.format, depth_bits, 0, 0, NULL);
+    S.ctx = OSMesaCreateContextExt(S.ctx_format, depth_bits, 0, 0, NULL);
     if (!S.ctx) {
         S.refused = "create";
         return -1;
@@ -197,14 +212,17 @@ static void write_info_line(FILE *f, int readpixels)
     } else {
         GLenum err = glGetError();   /* first pending GL error of the scene */
         fprintf(f, " gl_error=0x%04x", (unsigned)err);
+        if (S.rgb_via_rgba) fprintf(f, " mesa_rgb_via_rgba=1");
         for (i = 0; i < sizeof gl_ints / sizeof gl_ints[0]; i++) {
             GLint v = -1;
             glGetIntegerv(gl_ints[i].e, &v);
+            if (S.rgb_via_rgba && gl_ints[i].e == GL_ALPHA_BITS) v = 0;
             fprintf(f, " %s=%d", gl_ints[i].n, (int)v);
         }
         for (i = 0; i < sizeof os_ints / sizeof os_ints[0]; i++) {
             GLint v = -1;
             OSMesaGetIntegerv(os_ints[i].e, &v);
+            if (S.rgb_via_rgba && os_ints[i].e == OSMESA_FORMAT) v = (GLint)S.format;
             fprintf(f, " %s=%d", os_ints[i].n, (int)v);
         }
     }
@@ -237,6 +255,7 @@ void scene_readpixels_check(void)
     size_t row = (size_t)S.width * 4;
     unsigned char *px = (unsigned char *)malloc(row * S.height);
     FILE *f;
+    size_t i;
     int y;
     if (S.refused) { free(px); return; }
     if (!px) fail("out of memory");
@@ -247,6 +266,8 @@ void scene_readpixels_check(void)
     fprintf(f, "GLFX1 %d %d %d %d %d %d %u %d\n", S.width, S.height,
             format_has_alpha(S.format) ? 4 : 3, 0, 0, 0, 0u, 0);
     write_info_line(f, 1);
+    if (S.rgb_via_rgba)                          /* an RGB buffer reads alpha 1.0 */
+        for (i = 0; i < (size_t)S.width * S.height; i++) px[i * 4 + 3] = 255;
     for (y = S.height - 1; y >= 0; y--)          /* GL rows are bottom-up */
         fwrite(px + (size_t)y * row, 1, row, f);
     close_output(f);

@@ -44,6 +44,13 @@
  *   - OSMesaGetDepthBuffer memory is tightly packed (width*bytesPerValue per
  *     row) and row 0 is the BOTTOM row (GL window y = 0) whatever OSMESA_Y_UP
  *     says; the dump flips it to top-first.
+ *   - OSMESA_RGB + GL_UNSIGNED_BYTE renders corrupted pixels on llvmpipe
+ *     (softpipe is fine).  So when the runner marks the Mesa side
+ *     (GLFX_SIDE=mesa), an OSMESA_RGB scene renders into an OSMESA_RGBA
+ *     context and is dumped as RGB (alpha 255, GL_ALPHA_BITS reported 0, info
+ *     "mesa_rgb_via_rgba=1").  GLFX_RGB_RAW=1 shows Mesa's real RGB output.
+ *   - OSMESA_BGR + GL_UNSIGNED_BYTE is refused by OSMesaMakeCurrent (see
+ *     scene_begin_try).
  *   - depth_bits 1..15 gives no depth buffer, 16..23 gives 16-bit values
  *     (bytesPerValue 2, cleared = 0xffff), >= 24 gives 24-bit values in 32-bit
  *     words (bytesPerValue 4, cleared = 0x00ffffff, top byte 0).

@@ -20,6 +20,13 @@ struct PrimitiveState {
   // Viewport (GL 2.1 §2.11.1).
   int viewportX = 0, viewportY = 0, viewportWidth = 0, viewportHeight = 0;
   double depthNear = 0, depthFar = 1;
+  // How the batch was submitted. Mesa treats the ways differently: an indexed
+  // draw splits quads otherwise (assemble.h), and glBegin/glEnd and display
+  // lists turn a 3-vertex strip or fan into GL_TRIANGLES (vbo_exec.c,
+  // vbo_try_prim_conversion), which moves a fan's first-vertex provoking
+  // vertex.
+  enum class Submission { kBeginEnd, kDrawArrays, kDrawElements, kDisplayList };
+  Submission submission = Submission::kBeginEnd;
   raster::RasterState raster;  // depth test, scissor to the viewport, ...
 };
 

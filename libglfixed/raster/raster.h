@@ -5,14 +5,21 @@
 #include <GL/gl.h>
 
 #include "framebuffer/framebuffer.h"
+#include "raster/edge.h"
 
 namespace glfixed::raster {
 
 // Primary RGBA, then secondary RGBA (separate specular colour).
 constexpr int kMaxVaryings = 8;
 
+// A vertex in window coordinates AS LLVMPIPE SEES THEM: Mesa renders an OSMesa
+// buffer upside down (gallium's y = 0 is the top row) and flips it when it
+// hands the image back. So `y` is measured DOWN from the top edge of the
+// framebuffer: yDown = framebufferHeight - yGL. Keeping llvmpipe's orientation
+// matters because snapping and float rounding happen there (see
+// primitive/viewport.h for how x, y, z are computed).
 struct WindowVertex {
-  float x = 0, y = 0, z = 0;  // window coordinates, z in [0,1] after glDepthRange
+  float x = 0, y = 0, z = 0;  // x, y down from the top, z in [0,1] after glDepthRange
   float oneOverW = 1;         // 1 / w_clip, for perspective-correct interpolation
   float varying[kMaxVaryings] = {};
 };
@@ -23,13 +30,41 @@ struct RasterState {
   bool depthWrite = true;
   bool colorWrite[4] = {true, true, true, true};
   int varyingCount = 4;  // 4: primary colour; 8: primary + secondary, summed per fragment
-  // Only pixels in [scissorX0, scissorX1) x [scissorY0, scissorY1) are written:
-  // the viewport intersected with the buffer.
+  // Only pixels in [scissorX0, scissorX1) x [scissorY0, scissorY1) are written,
+  // in GL window coordinates (y up): the viewport intersected with the buffer.
   int scissorX0 = 0, scissorY0 = 0, scissorX1 = 0, scissorY1 = 0;
+  // glProvokingVertex(GL_FIRST_VERTEX_CONVENTION): drawTriangle reorders a
+  // clockwise triangle as (v0, v2, v1) instead of (v1, v0, v2), as llvmpipe
+  // does to keep the provoking vertex in its slot. The order changes float
+  // rounding of the interpolated attributes.
+  bool firstVertexConvention = false;
 };
 
-// `flatVaryings` non-null: GL_FLAT, every fragment takes these values.
+// Snaps the three vertices to llvmpipe's 1/256 grid (fixed_point.h) and
+// returns the sign of the fixed-point area: +1 counter-clockwise in GL window
+// space, -1 clockwise, 0 degenerate (llvmpipe never draws it). Culling and
+// two-sided colour selection use this sign.
+int snapTriangle(const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2, FixedTriangle& out);
+
+// Rasterizes a triangle whose snapped area is positive, with the vertices in
+// the order llvmpipe's setup sees them. `flatVaryings` non-null: GL_FLAT,
+// every fragment takes these values.
+void rasterCcwTriangle(const RasterState& state, Framebuffer& fb, const FixedTriangle& fixed, const WindowVertex& v0,
+                       const WindowVertex& v1, const WindowVertex& v2, const float* flatVaryings);
+
+// Snap, then draw whichever way the triangle faces (no culling): a clockwise
+// triangle is reordered as llvmpipe does (see firstVertexConvention).
+// `flatVaryings` non-null means every fragment takes those values (the
+// provoking vertex's colour, chosen by primitive assembly).
 void drawTriangle(const RasterState& state, Framebuffer& fb, const WindowVertex& v0, const WindowVertex& v1,
                   const WindowVertex& v2, const float* flatVaryings);
+
+// Float colour to 8 bits as llvmpipe's colour output does it: clamp to [0,1]
+// (NaN gives 0), then rint(v * 255) in single precision.
+inline uint8_t colorToUnorm8(float v) {
+  v = v > 0.0f ? v : 0.0f;  // NaN -> 0
+  v = v < 1.0f ? v : 1.0f;
+  return static_cast<uint8_t>(roundToInt32(v * 255.0f));
+}
 
 }  // namespace glfixed::raster

@@ -1,0 +1,209 @@
+// drawPrimitives: assembly, clipping, culling, two-sided colour selection and
+// the hand-over to the rasterizer, in the order Mesa's draw module and
+// llvmpipe's setup do them.
+// Every float operation here must round exactly as llvmpipe's does: forbid
+// contracting a * b + c into a fused multiply-add (GCC contracts by default
+// in C++ whenever the target has FMA).
+#pragma GCC optimize("fp-contract=off")
+
+#include <algorithm>
+#include <cstring>
+#include <vector>
+
+#include "primitive/assemble.h"
+#include "primitive/clip.h"
+#include "primitive/cull.h"
+#include "primitive/primitive.h"
+#include "primitive/viewport.h"
+#include "raster/raster.h"
+#include "state/lighting_attrib.h"
+
+namespace glfixed::primitive {
+
+namespace {
+
+// Attribute layout inside ClipVertex::attr.
+constexpr int kFrontAttribs = 0;  // primary RGBA, secondary RGBA
+constexpr int kBackAttribs = 8;
+
+struct BatchContext {
+  const PrimitiveState& state;
+  Framebuffer& fb;
+  ViewportTransform viewport;
+  FaceRule face;
+  bool pipeline;   // Mesa runs its draw pipeline for this batch
+  int varyingCount;
+  bool twoSided;
+};
+
+// llvmpipe's triangle setup: snap, cull and face by the fixed-point area,
+// pick front or back colours, put a clockwise triangle in counter-clockwise
+// order keeping the provoking vertex in its slot, rasterize.
+void setupTriangle(const BatchContext& b, const ClipVertex& v0, const ClipVertex& v1, const ClipVertex& v2,
+                   const ClipVertex& provoking) {
+  const ClipVertex* v[3] = {&v0, &v1, &v2};
+  raster::WindowVertex w[3];
+  for (int i = 0; i < 3; ++i) {
+    w[i].x = v[i]->window[0];
+    w[i].y = v[i]->window[1];
+    w[i].z = v[i]->window[2];
+    w[i].oneOverW = v[i]->window[3];
+  }
+  raster::FixedTriangle fixed;
+  const int sign = raster::snapTriangle(w[0], w[1], w[2], fixed);
+  if (sign == 0) return;
+  const bool front = b.face.isFront(sign);
+  if (b.face.culls(front)) return;
+
+  const int base = (b.twoSided && !front) ? kBackAttribs : kFrontAttribs;
+  for (int i = 0; i < 3; ++i) std::memcpy(w[i].varying, v[i]->attr + base, sizeof(float) * b.varyingCount);
+  const float* flat = b.state.flat ? provoking.attr + base : nullptr;
+
+  if (sign > 0) {
+    raster::rasterCcwTriangle(b.state.raster, b.fb, fixed, w[0], w[1], w[2], flat);
+  } else if (b.state.firstVertexConvention) {
+    raster::FixedTriangle r = {{fixed.x[0], fixed.x[2], fixed.x[1]}, {fixed.y[0], fixed.y[2], fixed.y[1]}};
+    raster::rasterCcwTriangle(b.state.raster, b.fb, r, w[0], w[2], w[1], flat);
+  } else {
+    raster::FixedTriangle r = {{fixed.x[1], fixed.x[0], fixed.x[2]}, {fixed.y[1], fixed.y[0], fixed.y[2]}};
+    raster::rasterCcwTriangle(b.state.raster, b.fb, r, w[1], w[0], w[2], flat);
+  }
+}
+
+// A triangle leaving the clipper: the draw module's cull stage (pipeline
+// only), then llvmpipe's setup.
+void emitTriangle(const BatchContext& b, const ClipVertex& v0, const ClipVertex& v1, const ClipVertex& v2,
+                  const ClipVertex& provoking) {
+  if (b.pipeline && drawModuleCulls(b.face, v0.window, v1.window, v2.window)) return;
+  setupTriangle(b, v0, v1, v2, provoking);
+}
+
+// The clipped polygon as a fan around its first vertex, which takes the
+// provoking slot (draw_pipe_clip.c, emit_poly).
+void emitClippedPolygon(const BatchContext& b, const ClippedPolygon& poly, const ClipVertex& provoking) {
+  const ClipVertex& first = *poly.vertex[0];
+  for (int i = 2; i < poly.count; ++i) {
+    if (b.state.firstVertexConvention)
+      emitTriangle(b, first, *poly.vertex[i - 1], *poly.vertex[i], provoking);
+    else
+      emitTriangle(b, *poly.vertex[i - 1], *poly.vertex[i], first, provoking);
+  }
+}
+
+void loadVertices(const ShadedVertices& in, uint32_t n, const ViewportTransform& viewport,
+                  std::vector<ClipVertex>& out, std::vector<uint32_t>& masks) {
+  out.resize(n);
+  masks.resize(n);
+  const bool back = in.hasBack, secondary = in.hasSecondary;
+  for (uint32_t i = 0; i < n; ++i) {
+    ClipVertex& v = out[i];
+    v.clip = in.clip[i];
+    masks[i] = clipMask(v.clip);
+    viewport.windowFromClip(v.clip, v.window);
+    const glm::vec4& fp = in.primary[kFront][i];
+    const glm::vec4 fs = secondary ? in.secondary[kFront][i] : glm::vec4(0);
+    const glm::vec4& bp = back ? in.primary[kBack][i] : fp;
+    const glm::vec4 bs = back && secondary ? in.secondary[kBack][i] : fs;
+    for (int k = 0; k < 4; ++k) {
+      v.attr[kFrontAttribs + k] = fp[k];
+      v.attr[kFrontAttribs + 4 + k] = fs[k];
+      v.attr[kBackAttribs + k] = bp[k];
+      v.attr[kBackAttribs + 4 + k] = bs[k];
+    }
+  }
+}
+
+// An llvmpipe quirk (lp_setup_analysis.c, lp_setup_analyse_triangles, a
+// workaround for Windows Aero): a non-indexed, unclipped, smooth GL_TRIANGLES
+// draw of exactly 9 vertices whose last triangle has three equal window y
+// draws nothing, unless the first six vertices form one particular
+// axis-aligned rectangle, which llvmpipe then draws with its rectangle code
+// (approximated here by the two triangles). Returns true when the draw is
+// consumed. `v(i)`: the segment's vertex i.
+template <typename VertexAt>
+bool dropsNineVertexTriangles(const VertexAt& v, const BatchContext& b) {
+  auto x = [&](int i) { return v(i).window[0]; };
+  auto y = [&](int i) { return v(i).window[1]; };
+  if (!(y(8) == y(7) && y(8) == y(6))) return false;
+  if (x(0) == x(1) && x(0) == x(5) && x(2) == x(3) && x(2) == x(4) && y(0) == y(3) && y(0) == y(5) &&
+      y(1) == y(2) && y(1) == y(4)) {
+    emitTriangle(b, v(0), v(1), v(2), v(2));
+    emitTriangle(b, v(3), v(4), v(5), v(5));
+  }
+  return true;
+}
+
+// One segment of the draw (assemble.h): decompose, clip, emit.
+void drawSegment(BatchContext& b, GLenum mode, const Segment& seg, bool indexed,
+                 const std::vector<ClipVertex>& clipVertices, const std::vector<uint32_t>& masks) {
+  const PrimitiveState& state = b.state;
+  auto global = [&](uint32_t local) { return (seg.hubReplaced && local == 0) ? 0u : seg.start + local; };
+  uint32_t anyOutside = 0;
+  for (uint32_t i = 0; i < seg.count; ++i) anyOutside |= masks[global(i)];
+  b.pipeline = anyOutside != 0;
+  const DecomposePath path = b.pipeline ? DecomposePath::kPipeline
+                                        : ((indexed || seg.hubReplaced) ? DecomposePath::kIndexed : DecomposePath::kLinear);
+  if (path == DecomposePath::kLinear && mode == GL_TRIANGLES && !state.flat && seg.count == 9 &&
+      dropsNineVertexTriangles([&](int i) -> const ClipVertex& { return clipVertices[global(i)]; }, b))
+    return;
+
+  static thread_local std::vector<Triangle> triangles;
+  assembleTriangles(mode, seg.count, state.firstVertexConvention, state.flat, path, triangles);
+
+  const int provokingSlot = primitive::provokingSlot(state.firstVertexConvention);
+  const int attribCount = kBackAttribs + 8;
+  static thread_local ClippedPolygon polygon;
+  for (const Triangle& local : triangles) {
+    const uint32_t t[3] = {global(local[0]), global(local[1]), global(local[2])};
+    const ClipVertex& v0 = clipVertices[t[0]];
+    const ClipVertex& v1 = clipVertices[t[1]];
+    const ClipVertex& v2 = clipVertices[t[2]];
+    const ClipVertex& provoking = clipVertices[t[provokingSlot]];
+    const uint32_t m0 = masks[t[0]], m1 = masks[t[1]], m2 = masks[t[2]];
+    if ((m0 | m1 | m2) == 0) {
+      emitTriangle(b, v0, v1, v2, provoking);
+    } else if ((m0 & m1 & m2) == 0) {
+      if (clipTriangle(v0, v1, v2, m0 | m1 | m2, attribCount, b.viewport, polygon))
+        emitClippedPolygon(b, polygon, provoking);
+    }
+  }
+}
+
+}  // namespace
+
+void drawPrimitives(const PrimitiveState& state, const ShadedVertices& vertices, Framebuffer& fb) {
+  const uint32_t n = trimVertexCount(state.mode, static_cast<uint32_t>(vertices.size()));
+  if (n < 3 || !fb.bound()) return;
+  switch (state.mode) {
+    case GL_TRIANGLES: case GL_TRIANGLE_STRIP: case GL_TRIANGLE_FAN:
+    case GL_QUADS: case GL_QUAD_STRIP: case GL_POLYGON: break;
+    default: return;  // points and lines: not yet
+  }
+
+  BatchContext b{state, fb, ViewportTransform::make(state.viewportX, state.viewportY, state.viewportWidth,
+                                                    state.viewportHeight, state.depthNear, state.depthFar,
+                                                    fb.height()),
+                 FaceRule{state.cullFace, state.cullFaceMode, state.frontFace}, false,
+                 std::clamp(state.raster.varyingCount, 4, 8), vertices.hasBack};
+  if (b.face.cullFace && b.face.cullFaceMode == GL_FRONT_AND_BACK) return;
+
+  static thread_local std::vector<ClipVertex> clipVertices;
+  static thread_local std::vector<uint32_t> masks;
+  static thread_local std::vector<Segment> segments;
+  loadVertices(vertices, n, b.viewport, clipVertices, masks);
+
+  using Submission = PrimitiveState::Submission;
+  const bool indexed = state.submission == Submission::kDrawElements || state.submission == Submission::kDisplayList;
+  GLenum mode = state.mode;
+  if ((state.submission == Submission::kBeginEnd || state.submission == Submission::kDisplayList) && n == 3 &&
+      (mode == GL_TRIANGLE_STRIP || mode == GL_TRIANGLE_FAN))
+    mode = GL_TRIANGLES;
+  // Indexed draws are segmented otherwise (not modelled yet): one segment.
+  if (indexed)
+    segments.assign(1, Segment{0, n, false});
+  else
+    splitIntoSegments(mode, n, segments);
+  for (const Segment& seg : segments) drawSegment(b, mode, seg, indexed, clipVertices, masks);
+}
+
+}  // namespace glfixed::primitive

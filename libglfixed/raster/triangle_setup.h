@@ -1,0 +1,71 @@
+// Internal to the rasterizer: one triangle, set up, and where its fragments
+// go. triangle.cpp fills these; the span shaders (scalar in triangle.cpp,
+// AVX2 in shade_avx2.cpp) consume them and must give identical results.
+#pragma once
+
+#include <GL/gl.h>
+
+#include <cstdint>
+
+#include "raster/edge.h"
+#include "raster/interpolate.h"
+#include "raster/raster.h"
+
+namespace glfixed::raster {
+
+struct TriangleSetup {
+  Edge edge[3];
+  Plane z, w;  // window z; 1/w_clip
+  Plane varying[kMaxVaryings];  // attribute * (1/w), for perspective correction
+  float flat[kMaxVaryings];
+  bool isFlat = false;
+  int varyingCount = 4;
+  int x0 = 0, x1 = -1, y0 = 0, y1 = -1;  // inclusive pixel bounds, llvmpipe (y-down) rows
+};
+
+// The framebuffer as the span shaders see it.
+struct ShadeTarget {
+  int height = 0;  // rows: llvmpipe row py is GL row height - 1 - py
+  // colour
+  const ColorBuffer* color = nullptr;
+  int bytesPerPixel = 4, red = 0, green = 1, blue = 2, alpha = 3;
+  bool colorWrite[4] = {true, true, true, true};
+  bool anyColor = true, allColor = true;
+  // depth (bits 0: no depth test)
+  int depthBits = 0;
+  void* depth = nullptr;  // row-major, GL rows, `depthWidth` values a row
+  int depthWidth = 0;
+  bool depthWrite = true;
+  GLenum depthFunc = GL_LESS;
+  bool secondary = false;  // add varyings 4..6 to 0..2
+};
+
+// Bounding box, edges and planes of a triangle with positive snapped area;
+// false when it covers no pixel of the drawable region.
+bool setupTriangle(const RasterState& state, const Framebuffer& fb, const FixedTriangle& fixed,
+                   const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2, const float* flatVaryings,
+                   TriangleSetup& out);
+ShadeTarget makeShadeTarget(const RasterState& state, Framebuffer& fb, const TriangleSetup& t);
+
+// Calls span(py, lo, hi) for every row of the triangle with pixels inside,
+// [lo, hi] being exactly the pixels inside on that row. (shade_avx2.cpp has
+// the same loop written out, to keep it inside its target attribute.)
+template <typename Span>
+inline void forEachSpan(const TriangleSetup& t, Span&& span) {
+  EdgeSpanStepper edge[3] = {{t.edge[0], t.y0}, {t.edge[1], t.y0}, {t.edge[2], t.y0}};
+  for (int py = t.y0; py <= t.y1; ++py) {
+    int64_t lo = t.x0, hi = t.x1;
+    for (const EdgeSpanStepper& e : edge) e.clip(lo, hi);
+    if (lo <= hi) span(py, static_cast<int>(lo), static_cast<int>(hi));
+    for (EdgeSpanStepper& e : edge) e.nextRow();
+  }
+}
+
+// Shades every pixel of the triangle, one fragment at a time.
+void shadeTriangleScalar(const TriangleSetup& t, const ShadeTarget& s);
+// The same with AVX2 and FMA, eight fragments at a time, to the same bits.
+// Call only when the CPU has both (haveAvx2Fma()).
+void shadeTriangleAvx2(const TriangleSetup& t, const ShadeTarget& s);
+bool haveAvx2Fma();
+
+}  // namespace glfixed::raster

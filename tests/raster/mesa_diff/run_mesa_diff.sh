@@ -1,0 +1,26 @@
+#!/bin/sh
+# run_mesa_diff.sh BIN_DIR WORK_DIR [SEEDS] [FRAMES]: random clip-space scenes of
+# every kind, drawn by Mesa (llvmpipe) and by libglfixed's primitive + raster
+# stages, compared exactly. BIN_DIR holds mesa_clip_dump, glfixed_clip_dump
+# and compare_dumps. Exit status 1 on any difference.
+set -u
+bin=$1
+work=$2
+seeds=${3:-3}
+frames=${4:-60}
+here=$(cd "$(dirname "$0")" && pwd)
+mkdir -p "$work"
+status=0
+for kind in grid flat2d persp clip tiny sliver near mix; do
+  seed=1
+  while [ "$seed" -le "$seeds" ]; do
+    scene="$work/$kind-$seed.txt"
+    python3 "$here/gen_scenes.py" "$kind" "$seed" "$frames" > "$scene" || exit 2
+    "$bin/mesa_clip_dump" "$scene" "$scene.mesa.bin" || exit 2
+    "$bin/glfixed_clip_dump" "$scene" "$scene.glfixed.bin" || exit 2
+    printf '%-8s seed %-3s ' "$kind" "$seed"
+    "$bin/compare_dumps" "$scene.mesa.bin" "$scene.glfixed.bin" 3 || status=1
+    seed=$((seed + 1))
+  done
+done
+exit $status

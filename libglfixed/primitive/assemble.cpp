@@ -94,13 +94,35 @@ void quadStrip(uint32_t n, bool first, DecomposePath path, std::vector<Triangle>
 uint32_t trimVertexCount(GLenum mode, uint32_t count) {
   uint32_t first = 3, step = 1;
   switch (mode) {
-    case GL_POINTS: first = 1; step = 1; break;
-    case GL_LINES: first = 2; step = 2; break;
-    case GL_LINE_STRIP: case GL_LINE_LOOP: first = 2; step = 1; break;
-    case GL_TRIANGLES: first = 3; step = 3; break;
-    case GL_QUADS: first = 4; step = 4; break;
-    case GL_QUAD_STRIP: first = 4; step = 2; break;
-    default: first = 3; step = 1; break;  // strips, fans, polygons
+    case GL_POINTS:
+      first = 1;
+      step = 1;
+      break;
+    case GL_LINES:
+      first = 2;
+      step = 2;
+      break;
+    case GL_LINE_STRIP:
+    case GL_LINE_LOOP:
+      first = 2;
+      step = 1;
+      break;
+    case GL_TRIANGLES:
+      first = 3;
+      step = 3;
+      break;
+    case GL_QUADS:
+      first = 4;
+      step = 4;
+      break;
+    case GL_QUAD_STRIP:
+      first = 4;
+      step = 2;
+      break;
+    default:
+      first = 3;
+      step = 1;
+      break;  // strips, fans, polygons
   }
   if (count < first) return 0;
   return count - (count - first) % step;

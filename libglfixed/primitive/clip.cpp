@@ -68,8 +68,8 @@ void interpolateClipVertex(const ClipVertex& out, const ClipVertex& in, float t,
   viewport.windowFromClipUnfused(dst.clip, dst.window);
 }
 
-bool clipTriangle(const ClipVertex& v0, const ClipVertex& v1, const ClipVertex& v2, uint32_t planes, int attribCount,
-                  const ViewportTransform& viewport, ClippedPolygon& result) {
+bool clipTriangle(const ClipVertex& v0, const ClipVertex& v1, const ClipVertex& v2, uint32_t planes,
+                  int attribCount, const ViewportTransform& viewport, ClippedPolygon& result) {
   const ClipVertex* bufferA[kMaxClippedVertices + 1];
   const ClipVertex* bufferB[kMaxClippedVertices + 1];
   const ClipVertex** in = bufferA;

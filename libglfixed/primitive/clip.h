@@ -24,8 +24,8 @@ namespace glfixed::primitive {
 constexpr int kMaxClipAttribs = 16;
 
 struct ClipVertex {
-  glm::vec4 clip{0};      // clip coordinates
-  float window[4] = {};   // x, y (down), z, 1/w: see viewport.h
+  glm::vec4 clip{0};     // clip coordinates
+  float window[4] = {};  // x, y (down), z, 1/w: see viewport.h
   float attr[kMaxClipAttribs] = {};
 };
 
@@ -65,7 +65,7 @@ void interpolateClipVertex(const ClipVertex& out, const ClipVertex& in, float t,
 // Clips triangle (v0, v1, v2) against every plane in `planes` (clip mask
 // bits). Returns false when nothing is left; else `result` holds a convex
 // polygon of 3 or more vertices.
-bool clipTriangle(const ClipVertex& v0, const ClipVertex& v1, const ClipVertex& v2, uint32_t planes, int attribCount,
-                  const struct ViewportTransform& viewport, ClippedPolygon& result);
+bool clipTriangle(const ClipVertex& v0, const ClipVertex& v1, const ClipVertex& v2, uint32_t planes,
+                  int attribCount, const struct ViewportTransform& viewport, ClippedPolygon& result);
 
 }  // namespace glfixed::primitive

@@ -31,9 +31,14 @@ struct BatchContext {
   Framebuffer& fb;
   ViewportTransform viewport;
   FaceRule face;
-  bool pipeline;   // Mesa runs its draw pipeline for this batch
+  bool pipeline;  // Mesa runs its draw pipeline for the current segment (assemble.h)
   int varyingCount;
   bool twoSided;
+  float constantColours[8];    // primary, secondary of vertex 0 (see PrimitiveState::constantPrimary)
+  raster::RasterState raster;  // state.raster with flatGroups set for this draw
+  // llvmpipe's "uses constant interpolation": GL_FLAT with a colour the
+  // fragment shader really reads as an input. It changes quad splits.
+  bool flatInputs;
 };
 
 // llvmpipe's triangle setup: snap, cull and face by the fixed-point area,
@@ -57,16 +62,25 @@ void setupTriangle(const BatchContext& b, const ClipVertex& v0, const ClipVertex
 
   const int base = (b.twoSided && !front) ? kBackAttribs : kFrontAttribs;
   for (int i = 0; i < 3; ++i) std::memcpy(w[i].varying, v[i]->attr + base, sizeof(float) * b.varyingCount);
-  const float* flat = b.state.flat ? provoking.attr + base : nullptr;
+  // Flat colours: the provoking vertex's (GL_FLAT), or Mesa's constant.
+  const float* flat = nullptr;
+  float flatValues[raster::kMaxVaryings];
+  if (b.raster.flatGroups != 0) {
+    const bool constantP = b.state.constantPrimary, constantS = b.state.constantSecondary;
+    const float* provoked = provoking.attr + base;
+    for (int k = 0; k < 4; ++k) flatValues[k] = constantP ? b.constantColours[k] : provoked[k];
+    for (int k = 4; k < 8; ++k) flatValues[k] = constantS ? b.constantColours[k] : provoked[k];
+    flat = flatValues;
+  }
 
   if (sign > 0) {
-    raster::rasterCcwTriangle(b.state.raster, b.fb, fixed, w[0], w[1], w[2], flat);
+    raster::rasterCcwTriangle(b.raster, b.fb, fixed, w[0], w[1], w[2], flat);
   } else if (b.state.firstVertexConvention) {
     raster::FixedTriangle r = {{fixed.x[0], fixed.x[2], fixed.x[1]}, {fixed.y[0], fixed.y[2], fixed.y[1]}};
-    raster::rasterCcwTriangle(b.state.raster, b.fb, r, w[0], w[2], w[1], flat);
+    raster::rasterCcwTriangle(b.raster, b.fb, r, w[0], w[2], w[1], flat);
   } else {
     raster::FixedTriangle r = {{fixed.x[1], fixed.x[0], fixed.x[2]}, {fixed.y[1], fixed.y[0], fixed.y[2]}};
-    raster::rasterCcwTriangle(b.state.raster, b.fb, r, w[1], w[0], w[2], flat);
+    raster::rasterCcwTriangle(b.raster, b.fb, r, w[1], w[0], w[2], flat);
   }
 }
 
@@ -141,14 +155,15 @@ void drawSegment(BatchContext& b, GLenum mode, const Segment& seg, bool indexed,
   uint32_t anyOutside = 0;
   for (uint32_t i = 0; i < seg.count; ++i) anyOutside |= masks[global(i)];
   b.pipeline = anyOutside != 0;
-  const DecomposePath path = b.pipeline ? DecomposePath::kPipeline
-                                        : ((indexed || seg.hubReplaced) ? DecomposePath::kIndexed : DecomposePath::kLinear);
-  if (path == DecomposePath::kLinear && mode == GL_TRIANGLES && !state.flat && seg.count == 9 &&
+  const DecomposePath path =
+      b.pipeline ? DecomposePath::kPipeline
+                 : ((indexed || seg.hubReplaced) ? DecomposePath::kIndexed : DecomposePath::kLinear);
+  if (path == DecomposePath::kLinear && mode == GL_TRIANGLES && !b.flatInputs && seg.count == 9 &&
       dropsNineVertexTriangles([&](int i) -> const ClipVertex& { return clipVertices[global(i)]; }, b))
     return;
 
   static thread_local std::vector<Triangle> triangles;
-  assembleTriangles(mode, seg.count, state.firstVertexConvention, state.flat, path, triangles);
+  assembleTriangles(mode, seg.count, state.firstVertexConvention, b.flatInputs, path, triangles);
 
   const int provokingSlot = primitive::provokingSlot(state.firstVertexConvention);
   const int attribCount = kBackAttribs + 8;
@@ -175,17 +190,38 @@ void drawPrimitives(const PrimitiveState& state, const ShadedVertices& vertices,
   const uint32_t n = trimVertexCount(state.mode, static_cast<uint32_t>(vertices.size()));
   if (n < 3 || !fb.bound()) return;
   switch (state.mode) {
-    case GL_TRIANGLES: case GL_TRIANGLE_STRIP: case GL_TRIANGLE_FAN:
-    case GL_QUADS: case GL_QUAD_STRIP: case GL_POLYGON: break;
+    case GL_TRIANGLES:
+    case GL_TRIANGLE_STRIP:
+    case GL_TRIANGLE_FAN:
+    case GL_QUADS:
+    case GL_QUAD_STRIP:
+    case GL_POLYGON: break;
     default: return;  // points and lines: not yet
   }
 
-  BatchContext b{state, fb, ViewportTransform::make(state.viewportX, state.viewportY, state.viewportWidth,
-                                                    state.viewportHeight, state.depthNear, state.depthFar,
-                                                    fb.height()),
-                 FaceRule{state.cullFace, state.cullFaceMode, state.frontFace}, false,
-                 std::clamp(state.raster.varyingCount, 4, 8), vertices.hasBack};
+  BatchContext b{state,
+                 fb,
+                 ViewportTransform::make(state.viewportX, state.viewportY, state.viewportWidth,
+                                         state.viewportHeight, state.depthNear, state.depthFar, fb.height()),
+                 FaceRule{state.cullFace, state.cullFaceMode, state.frontFace},
+                 false,
+                 std::clamp(state.raster.varyingCount, 4, 8),
+                 vertices.hasBack,
+                 {},
+                 {},
+                 false};
   if (b.face.cullFace && b.face.cullFaceMode == GL_FRONT_AND_BACK) return;
+  for (int k = 0; k < 4; ++k) {
+    b.constantColours[k] = vertices.primary[kFront][0][k];
+    b.constantColours[4 + k] = vertices.hasSecondary ? vertices.secondary[kFront][0][k] : 0.0f;
+  }
+  using Group = raster::RasterState;
+  const bool secondary = b.varyingCount == 8;
+  b.raster = state.raster;
+  b.raster.firstVertexConvention = state.firstVertexConvention;
+  b.raster.flatGroups = ((state.flat || state.constantPrimary) ? Group::kPrimaryGroup : 0u) |
+                        ((state.flat || state.constantSecondary) ? Group::kSecondaryGroup : 0u);
+  b.flatInputs = state.flat && (!state.constantPrimary || (secondary && !state.constantSecondary));
 
   static thread_local std::vector<ClipVertex> clipVertices;
   static thread_local std::vector<uint32_t> masks;
@@ -193,7 +229,8 @@ void drawPrimitives(const PrimitiveState& state, const ShadedVertices& vertices,
   loadVertices(vertices, n, b.viewport, clipVertices, masks);
 
   using Submission = PrimitiveState::Submission;
-  const bool indexed = state.submission == Submission::kDrawElements || state.submission == Submission::kDisplayList;
+  const bool indexed =
+      state.submission == Submission::kDrawElements || state.submission == Submission::kDisplayList;
   GLenum mode = state.mode;
   if ((state.submission == Submission::kBeginEnd || state.submission == Submission::kDisplayList) && n == 3 &&
       (mode == GL_TRIANGLE_STRIP || mode == GL_TRIANGLE_FAN))

@@ -12,8 +12,8 @@ namespace glfixed::primitive {
 
 struct PrimitiveState {
   GLenum mode = GL_TRIANGLES;
-  bool flat = false;                  // GL_FLAT: the provoking vertex's colour
-  bool firstVertexConvention = false; // glProvokingVertex(GL_FIRST_VERTEX_CONVENTION)
+  bool flat = false;                   // GL_FLAT: the provoking vertex's colour
+  bool firstVertexConvention = false;  // glProvokingVertex(GL_FIRST_VERTEX_CONVENTION)
   bool cullFace = false;
   GLenum cullFaceMode = GL_BACK;
   GLenum frontFace = GL_CCW;
@@ -27,6 +27,16 @@ struct PrimitiveState {
   // vertex.
   enum class Submission { kBeginEnd, kDrawArrays, kDrawElements, kDisplayList };
   Submission submission = Submission::kBeginEnd;
+  // A colour that is not a per-vertex attribute of the draw in Mesa's terms
+  // (lighting off, and the colour not part of the vertex data: no colour
+  // array, or under glBegin/glEnd not in the vbo vertex format) is read by
+  // Mesa's fixed-function fragment shader as a constant, the current colour,
+  // clamped (ff_fragment_shader.cpp, STATE_CURRENT_ATTRIB_MAYBE_VP_CLAMPED):
+  // never interpolated, and it does not make GL_FLAT a "flat input" (so
+  // quads split as when smooth, assemble.h). Every vertex then carries that
+  // colour; vertex 0's is used. Measured with glColor before glBegin.
+  bool constantPrimary = false;
+  bool constantSecondary = false;
   raster::RasterState raster;  // depth test, scissor to the viewport, ...
 };
 

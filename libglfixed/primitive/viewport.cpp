@@ -10,8 +10,8 @@
 
 namespace glfixed::primitive {
 
-ViewportTransform ViewportTransform::make(int x, int y, int width, int height, double depthNear, double depthFar,
-                                          int framebufferHeight) {
+ViewportTransform ViewportTransform::make(int x, int y, int width, int height, double depthNear,
+                                          double depthFar, int framebufferHeight) {
   ViewportTransform v;
   const float fx = static_cast<float>(x), fy = static_cast<float>(y);
   const float halfWidth = 0.5f * static_cast<float>(width);

@@ -122,7 +122,7 @@ class EdgeSpanStepper {
 
  private:
   enum Kind { kConstant, kUpper, kLower } kind_ = kConstant;
-  int64_t a_ = 0, step_ = 0;                    // kConstant
+  int64_t a_ = 0, step_ = 0;  // kConstant
   int64_t q_ = 0, r_ = 0, div_ = 1, stepQ_ = 0, stepR_ = 0;
 };
 

@@ -38,6 +38,12 @@ struct RasterState {
   // does to keep the provoking vertex in its slot. The order changes float
   // rounding of the interpolated attributes.
   bool firstVertexConvention = false;
+  // Which colours take the triangle's `flatVaryings` at every fragment
+  // instead of being interpolated: bit 0 the primary colour (varyings 0..3),
+  // bit 1 the secondary (4..7). GL_FLAT makes both flat; a colour Mesa reads
+  // as a constant (PrimitiveState::constantPrimary) makes only that one.
+  unsigned flatGroups = kPrimaryGroup | kSecondaryGroup;
+  static constexpr unsigned kPrimaryGroup = 1, kSecondaryGroup = 2;
 };
 
 // Snaps the three vertices to llvmpipe's 1/256 grid (fixed_point.h) and
@@ -47,15 +53,17 @@ struct RasterState {
 int snapTriangle(const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2, FixedTriangle& out);
 
 // Rasterizes a triangle whose snapped area is positive, with the vertices in
-// the order llvmpipe's setup sees them. `flatVaryings` non-null: GL_FLAT,
-// every fragment takes these values.
-void rasterCcwTriangle(const RasterState& state, Framebuffer& fb, const FixedTriangle& fixed, const WindowVertex& v0,
-                       const WindowVertex& v1, const WindowVertex& v2, const float* flatVaryings);
+// the order llvmpipe's setup sees them. `flatVaryings` non-null: the colours
+// in state.flatGroups take these values at every fragment.
+void rasterCcwTriangle(const RasterState& state, Framebuffer& fb, const FixedTriangle& fixed,
+                       const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2,
+                       const float* flatVaryings);
 
 // Snap, then draw whichever way the triangle faces (no culling): a clockwise
 // triangle is reordered as llvmpipe does (see firstVertexConvention).
 // `flatVaryings` non-null means every fragment takes those values (the
-// provoking vertex's colour, chosen by primitive assembly).
+// provoking vertex's colour, chosen by primitive assembly), for the colours
+// in state.flatGroups (both by default).
 void drawTriangle(const RasterState& state, Framebuffer& fb, const WindowVertex& v0, const WindowVertex& v1,
                   const WindowVertex& v2, const float* flatVaryings);
 

@@ -22,7 +22,8 @@ namespace {
 
 // fma(dady, py, fma(dadx, px, a0)), as Plane::at.
 GLFIXED_AVX2 inline __m256 planeAt(const Plane& p, __m256 px, __m256 py) {
-  return _mm256_fmadd_ps(_mm256_set1_ps(p.dady), py, _mm256_fmadd_ps(_mm256_set1_ps(p.dadx), px, _mm256_set1_ps(p.a0)));
+  return _mm256_fmadd_ps(_mm256_set1_ps(p.dady), py,
+                         _mm256_fmadd_ps(_mm256_set1_ps(p.dadx), px, _mm256_set1_ps(p.a0)));
 }
 
 // depthToUnorm: min(z, 1), max(., 0) (minps/maxps return the second operand
@@ -72,7 +73,9 @@ GLFIXED_AVX2 void shadeTriangleAvx2(const TriangleSetup& t, const ShadeTarget& s
   const GLenum depthFunc = s.depthFunc;
   const bool anyColor = s.anyColor;
   const bool secondary = s.secondary;
-  const bool isFlat = t.isFlat;
+  const bool flatPrimary = t.flatPrimary, flatSecondary = t.flatSecondary;
+  // Every colour flat: the same bytes for every fragment.
+  const bool isFlat = flatPrimary && (!secondary || flatSecondary);
   const int bpp = s.bytesPerPixel;
   const int offset[4] = {s.red, s.green, s.blue, s.alpha};
   const bool colorWrite[4] = {s.colorWrite[0], s.colorWrite[1], s.colorWrite[2], s.colorWrite[3]};
@@ -159,7 +162,8 @@ GLFIXED_AVX2 void shadeTriangleAvx2(const TriangleSetup& t, const ShadeTarget& s
         __m256 c[4];
         for (int k = 0; k < 4; ++k) c[k] = _mm256_mul_ps(planeAt(planes[k], fpx, fpy), oow);
         if (secondary) {
-          for (int k = 0; k < 3; ++k) c[k] = _mm256_add_ps(c[k], _mm256_mul_ps(planeAt(planes[4 + k], fpx, fpy), oow));
+          for (int k = 0; k < 3; ++k)
+            c[k] = _mm256_add_ps(c[k], _mm256_mul_ps(planeAt(planes[4 + k], fpx, fpy), oow));
         }
         for (int k = 0; k < 4; ++k) bytes[k] = colorToUnormX8(c[k]);
       }

@@ -33,8 +33,10 @@ void shadeSpanScalar(const TriangleSetup& t, const ShadeTarget& s, int py, int l
   const int glY = s.height - 1 - py;
   const float fpy = static_cast<float>(py);
   uint8_t* colorRow = s.color->pixel(0, glY);
-  uint32_t* depth32 = s.depthBits == 24 ? static_cast<uint32_t*>(s.depth) + size_t(glY) * s.depthWidth : nullptr;
-  uint16_t* depth16 = s.depthBits == 16 ? static_cast<uint16_t*>(s.depth) + size_t(glY) * s.depthWidth : nullptr;
+  uint32_t* depth32 =
+      s.depthBits == 24 ? static_cast<uint32_t*>(s.depth) + size_t(glY) * s.depthWidth : nullptr;
+  uint16_t* depth16 =
+      s.depthBits == 16 ? static_cast<uint16_t*>(s.depth) + size_t(glY) * s.depthWidth : nullptr;
   for (int px = lo; px <= hi; ++px) {
     const float fpx = static_cast<float>(px);
     if (s.depthBits) {
@@ -49,19 +51,20 @@ void shadeSpanScalar(const TriangleSetup& t, const ShadeTarget& s, int py, int l
       }
     }
     if (!s.anyColor) continue;
-    float c[kMaxVaryings];
-    if (t.isFlat) {
-      for (int k = 0; k < t.varyingCount; ++k) c[k] = t.flat[k];
-    } else {
-      const float oow = 1.0f / t.w.at(fpx, fpy);
-      for (int k = 0; k < t.varyingCount; ++k) c[k] = t.varying[k].at(fpx, fpy) * oow;
+    float c[kMaxVaryings] = {};
+    const bool smooth = !t.flatPrimary || (s.secondary && !t.flatSecondary);
+    const float oow = smooth ? 1.0f / t.w.at(fpx, fpy) : 0.0f;
+    for (int k = 0; k < t.varyingCount; ++k) {
+      const bool flat = k < 4 ? t.flatPrimary : t.flatSecondary;
+      c[k] = flat ? t.flat[k] : t.varying[k].at(fpx, fpy) * oow;
     }
     if (s.secondary) {  // GL 2.1 §3.9: colour sum, rgb only
       c[0] += c[4];
       c[1] += c[5];
       c[2] += c[6];
     }
-    const uint8_t rgba[4] = {colorToUnorm8(c[0]), colorToUnorm8(c[1]), colorToUnorm8(c[2]), colorToUnorm8(c[3])};
+    const uint8_t rgba[4] = {colorToUnorm8(c[0]), colorToUnorm8(c[1]), colorToUnorm8(c[2]),
+                             colorToUnorm8(c[3])};
     uint8_t* p = colorRow + size_t(px) * s.bytesPerPixel;
     const int offset[4] = {s.red, s.green, s.blue, s.alpha};
     for (int k = 0; k < 4; ++k)
@@ -103,8 +106,8 @@ ShadeTarget makeShadeTarget(const RasterState& state, Framebuffer& fb, const Tri
 }
 
 bool setupTriangle(const RasterState& state, const Framebuffer& fb, const FixedTriangle& fixed,
-                   const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2, const float* flatVaryings,
-                   TriangleSetup& t) {
+                   const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2,
+                   const float* flatVaryings, TriangleSetup& t) {
   // Bounding box as llvmpipe computes it (x1 exclusive of a right vertex on a
   // pixel centre, y0 exclusive of a top one, for GL's bottom-left rule).
   const int32_t minX = std::min({fixed.x[0], fixed.x[1], fixed.x[2]});
@@ -128,19 +131,24 @@ bool setupTriangle(const RasterState& state, const Framebuffer& fb, const FixedT
   t.varyingCount = state.varyingCount == 8 ? 8 : 4;
   const PlaneSetup ps(v0.x, v0.y, v1.x, v1.y, v2.x, v2.y);
   t.z = ps.plane(v0.z, v1.z, v2.z);
-  t.isFlat = flatVaryings != nullptr;
-  if (t.isFlat) {
+  t.flatPrimary = flatVaryings && (state.flatGroups & RasterState::kPrimaryGroup);
+  t.flatSecondary = flatVaryings && (state.flatGroups & RasterState::kSecondaryGroup);
+  if (flatVaryings)
     for (int k = 0; k < t.varyingCount; ++k) t.flat[k] = flatVaryings[k];
-  } else {
+  if (!t.flatPrimary || (t.varyingCount == 8 && !t.flatSecondary)) {
     t.w = ps.plane(v0.oneOverW, v1.oneOverW, v2.oneOverW);
-    for (int k = 0; k < t.varyingCount; ++k)
-      t.varying[k] = ps.plane(v0.varying[k] * v0.oneOverW, v1.varying[k] * v1.oneOverW, v2.varying[k] * v2.oneOverW);
+    for (int k = 0; k < t.varyingCount; ++k) {
+      if (k < 4 ? t.flatPrimary : t.flatSecondary) continue;
+      t.varying[k] =
+          ps.plane(v0.varying[k] * v0.oneOverW, v1.varying[k] * v1.oneOverW, v2.varying[k] * v2.oneOverW);
+    }
   }
   return true;
 }
 
-void rasterCcwTriangle(const RasterState& state, Framebuffer& fb, const FixedTriangle& fixed, const WindowVertex& v0,
-                       const WindowVertex& v1, const WindowVertex& v2, const float* flatVaryings) {
+void rasterCcwTriangle(const RasterState& state, Framebuffer& fb, const FixedTriangle& fixed,
+                       const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2,
+                       const float* flatVaryings) {
   TriangleSetup t;
   if (!setupTriangle(state, fb, fixed, v0, v1, v2, flatVaryings, t)) return;
   const ShadeTarget target = makeShadeTarget(state, fb, t);

@@ -15,10 +15,10 @@ namespace glfixed::raster {
 
 struct TriangleSetup {
   Edge edge[3];
-  Plane z, w;  // window z; 1/w_clip
+  Plane z, w;                   // window z; 1/w_clip
   Plane varying[kMaxVaryings];  // attribute * (1/w), for perspective correction
   float flat[kMaxVaryings];
-  bool isFlat = false;
+  bool flatPrimary = false, flatSecondary = false;  // these take `flat`, uninterpolated
   int varyingCount = 4;
   int x0 = 0, x1 = -1, y0 = 0, y1 = -1;  // inclusive pixel bounds, llvmpipe (y-down) rows
 };
@@ -43,8 +43,8 @@ struct ShadeTarget {
 // Bounding box, edges and planes of a triangle with positive snapped area;
 // false when it covers no pixel of the drawable region.
 bool setupTriangle(const RasterState& state, const Framebuffer& fb, const FixedTriangle& fixed,
-                   const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2, const float* flatVaryings,
-                   TriangleSetup& out);
+                   const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2,
+                   const float* flatVaryings, TriangleSetup& out);
 ShadeTarget makeShadeTarget(const RasterState& state, Framebuffer& fb, const TriangleSetup& t);
 
 // Calls span(py, lo, hi) for every row of the triangle with pixels inside,

@@ -33,7 +33,8 @@ TEST(Assemble, TriangleFan) {
   // A smooth 4-vertex fan on the linear path ignores the convention.
   EXPECT_EQ(assemble(GL_TRIANGLE_FAN, 4, true), (Tris{{0, 1, 2}, {0, 2, 3}}));
   EXPECT_EQ(assemble(GL_TRIANGLE_FAN, 4, true, true), (Tris{{1, 2, 0}, {2, 3, 0}}));
-  EXPECT_EQ(assemble(GL_TRIANGLE_FAN, 4, true, false, DecomposePath::kPipeline), (Tris{{1, 2, 0}, {2, 3, 0}}));
+  EXPECT_EQ(assemble(GL_TRIANGLE_FAN, 4, true, false, DecomposePath::kPipeline),
+            (Tris{{1, 2, 0}, {2, 3, 0}}));
 }
 
 TEST(Assemble, PolygonIsAFanProvokedByVertexZero) {

@@ -111,7 +111,8 @@ TEST(ClipTriangle, GeometryBehindTheEye) {
   // plane z = -w; what is left lies in front.
   ClipVertex v0 = vertex(0, 0, 0.5f, 1), v1 = vertex(0.5f, 0, 0.5f, 1), v2 = vertex(0, 0.5f, 2, -1);
   ClippedPolygon poly;
-  ASSERT_TRUE(clipTriangle(v0, v1, v2, clipMask(v0.clip) | clipMask(v1.clip) | clipMask(v2.clip), 0, kViewport, poly));
+  ASSERT_TRUE(clipTriangle(v0, v1, v2, clipMask(v0.clip) | clipMask(v1.clip) | clipMask(v2.clip), 0,
+                           kViewport, poly));
   for (int i = 0; i < poly.count; ++i) {
     EXPECT_GT(poly.vertex[i]->clip.w, 0.0f);
     for (int p = 0; p < 6; ++p) EXPECT_GE(distanceToPlane(p, poly.vertex[i]->clip), -1e-6f) << i << " " << p;

@@ -1,10 +1,9 @@
 // drawPrimitives end to end: provoking vertices, culling, two-sided colour,
 // clipping, viewport.
-#include "primitive/primitive.h"
-
 #include <gtest/gtest.h>
 
 #include "primitive/cull.h"
+#include "primitive/primitive.h"
 #include "raster/test_surface.h"
 #include "state/lighting_attrib.h"
 
@@ -48,14 +47,18 @@ struct Scene {
 
 // Every mode, flat, both conventions: the pixel colour is the provoking
 // vertex's (REFERENCE.md, "Primitives and flat shading").
-struct ProvokingCase { GLenum mode; bool first; int provoking; };
+struct ProvokingCase {
+  GLenum mode;
+  bool first;
+  int provoking;
+};
 
 TEST(DrawPrimitives, ProvokingVertexPerMode) {
   const ProvokingCase cases[] = {
-      {GL_TRIANGLES, false, 2},      {GL_TRIANGLES, true, 0},   {GL_TRIANGLE_STRIP, false, 3},
-      {GL_TRIANGLE_STRIP, true, 1},  {GL_TRIANGLE_FAN, false, 3}, {GL_TRIANGLE_FAN, true, 2},
-      {GL_QUADS, false, 3},          {GL_QUADS, true, 3},       {GL_QUAD_STRIP, false, 3},
-      {GL_QUAD_STRIP, true, 3},      {GL_POLYGON, false, 0},    {GL_POLYGON, true, 0},
+      {GL_TRIANGLES, false, 2},     {GL_TRIANGLES, true, 0},     {GL_TRIANGLE_STRIP, false, 3},
+      {GL_TRIANGLE_STRIP, true, 1}, {GL_TRIANGLE_FAN, false, 3}, {GL_TRIANGLE_FAN, true, 2},
+      {GL_QUADS, false, 3},         {GL_QUADS, true, 3},         {GL_QUAD_STRIP, false, 3},
+      {GL_QUAD_STRIP, true, 3},     {GL_POLYGON, false, 0},      {GL_POLYGON, true, 0},
   };
   for (const ProvokingCase& c : cases) {
     Scene s;
@@ -64,12 +67,41 @@ TEST(DrawPrimitives, ProvokingVertexPerMode) {
     // The probe pixel (8, 8) lies in the second triangle of strips and fans,
     // in the first quad of quad strips.
     switch (c.mode) {
-      case GL_TRIANGLES: s.add(-1, -1, 0); s.add(3, -1, 1); s.add(-1, 3, 2); break;
-      case GL_TRIANGLE_STRIP: s.add(-1, -1, 0); s.add(-1, 1, 1); s.add(-0.2f, -1, 2); s.add(1, 1, 3); break;
-      case GL_TRIANGLE_FAN: s.add(-1, -1, 0); s.add(1, -1, 1); s.add(1, 0.2f, 2); s.add(0.2f, 1, 3); break;
-      case GL_QUADS: s.add(-1, -1, 0); s.add(1, -1, 1); s.add(1, 1, 2); s.add(-1, 1, 3); break;
-      case GL_QUAD_STRIP: s.add(-1, -1, 0); s.add(1, -1, 1); s.add(-1, 1, 2); s.add(1, 1, 3); break;
-      default: s.add(-1, -1, 0); s.add(1, -1, 1); s.add(1, 1, 2); s.add(-1, 1, 3); break;
+      case GL_TRIANGLES:
+        s.add(-1, -1, 0);
+        s.add(3, -1, 1);
+        s.add(-1, 3, 2);
+        break;
+      case GL_TRIANGLE_STRIP:
+        s.add(-1, -1, 0);
+        s.add(-1, 1, 1);
+        s.add(-0.2f, -1, 2);
+        s.add(1, 1, 3);
+        break;
+      case GL_TRIANGLE_FAN:
+        s.add(-1, -1, 0);
+        s.add(1, -1, 1);
+        s.add(1, 0.2f, 2);
+        s.add(0.2f, 1, 3);
+        break;
+      case GL_QUADS:
+        s.add(-1, -1, 0);
+        s.add(1, -1, 1);
+        s.add(1, 1, 2);
+        s.add(-1, 1, 3);
+        break;
+      case GL_QUAD_STRIP:
+        s.add(-1, -1, 0);
+        s.add(1, -1, 1);
+        s.add(-1, 1, 2);
+        s.add(1, 1, 3);
+        break;
+      default:
+        s.add(-1, -1, 0);
+        s.add(1, -1, 1);
+        s.add(1, 1, 2);
+        s.add(-1, 1, 3);
+        break;
     }
     s.draw(c.mode);
     EXPECT_TRUE(s.is(8, 8, colourOf(c.provoking))) << "mode " << c.mode << " first " << c.first;
@@ -193,14 +225,59 @@ TEST(DrawPrimitives, NineVertexTrianglesQuirk) {
   // llvmpipe draws nothing for a smooth 9-vertex GL_TRIANGLES draw whose last
   // triangle is horizontal in window space (measured).
   Scene s;
-  s.add(-1, -1, 0); s.add(1, -1, 1); s.add(0, 1, 2);
-  s.add(-0.5f, -0.5f, 0); s.add(0.5f, -0.5f, 1); s.add(0, 0.5f, 2);
-  s.add(-0.5f, 0.25f, 0); s.add(0.5f, 0.25f, 1); s.add(0, 0.25f, 2);
+  s.add(-1, -1, 0);
+  s.add(1, -1, 1);
+  s.add(0, 1, 2);
+  s.add(-0.5f, -0.5f, 0);
+  s.add(0.5f, -0.5f, 1);
+  s.add(0, 0.5f, 2);
+  s.add(-0.5f, 0.25f, 0);
+  s.add(0.5f, 0.25f, 1);
+  s.add(0, 0.25f, 2);
   s.draw(GL_TRIANGLES);
   EXPECT_EQ(s.surface.coveredCount(), 0);
   s.state.flat = true;
   s.draw(GL_TRIANGLES);
   EXPECT_GT(s.surface.coveredCount(), 0);
+}
+
+TEST(DrawPrimitives, ConstantColourIsExactUnderPerspective) {
+  // Mesa reads a colour that is not per vertex as a constant: 0.3 * 255 is a
+  // tie, and every fragment gets rint(76.5) = 76, where interpolating it in
+  // perspective would give 76 or 77.
+  Scene s;
+  s.state.constantPrimary = true;
+  const glm::vec4 c(0.3f, 0.7f, 0.3f, 1);
+  s.v.clip = {glm::vec4(-1.5f, -1.5f, 0, 1.5f), glm::vec4(6, -6, 0, 6), glm::vec4(6, 6, 0, 6),
+              glm::vec4(-1.5f, 1.5f, 0, 1.5f)};
+  s.v.primary[kFront].assign(4, c);
+  s.draw(GL_QUADS);
+  for (int y = 0; y < 16; ++y)
+    for (int x = 0; x < 16; ++x) {
+      ASSERT_EQ(s.surface.at(x, y)[0], 76) << x << "," << y;
+      ASSERT_EQ(s.surface.at(x, y)[1], 178) << x << "," << y;
+    }
+}
+
+TEST(DrawPrimitives, FlatWithConstantColourSplitsQuadsLikeSmooth) {
+  // GL_FLAT without a colour input: a non-planar quad's depth follows the
+  // smooth split (v0,v1,v2) (v0,v2,v3), not (v0,v1,v3) (v1,v2,v3).
+  auto depthAt = [](bool flat, bool constant) {
+    Scene s;
+    s.state.flat = flat;
+    s.state.constantPrimary = constant;
+    s.state.raster.depthTest = true;
+    s.state.raster.depthFunc = GL_ALWAYS;
+    s.add(-1, -1, 0, -0.5f);
+    s.add(1, -1, 0, 0.5f);
+    s.add(1, 1, 0, -0.5f);
+    s.add(-1, 1, 0, 0.9f);
+    if (constant) s.v.primary[kFront].assign(4, colourOf(0));
+    s.draw(GL_QUADS);
+    return s.surface.fb.depth.get(4, 12);
+  };
+  EXPECT_EQ(depthAt(true, true), depthAt(false, false));
+  EXPECT_NE(depthAt(true, false), depthAt(false, false));
 }
 
 TEST(FaceRule, DrawModuleCullTreatsZeroAreaAsBack) {

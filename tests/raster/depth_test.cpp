@@ -17,9 +17,9 @@ TEST(DepthConversion, TwentyFourBitsRoundToNearestEven) {
   EXPECT_EQ(depthToUnorm(0.0f, 24), 0u);
   EXPECT_EQ(depthToUnorm(1.0f, 24), 0xffffffu);
   EXPECT_EQ(depthToUnorm(0.5f, 24), 0x800000u);  // 8388607.5 -> even (REFERENCE.md)
-  EXPECT_EQ(depthToUnorm(2.0f, 24), 0xffffffu);   // clamped
+  EXPECT_EQ(depthToUnorm(2.0f, 24), 0xffffffu);  // clamped
   EXPECT_EQ(depthToUnorm(-1.0f, 24), 0u);
-  EXPECT_EQ(depthToUnorm(NAN, 24), 0xffffffu);    // minps/maxps: NaN -> 1
+  EXPECT_EQ(depthToUnorm(NAN, 24), 0xffffffu);  // minps/maxps: NaN -> 1
 }
 
 TEST(DepthConversion, SixteenBitsUseTheMagicNumberConversion) {
@@ -35,11 +35,14 @@ TEST(DepthConversion, SixteenBitsUseTheMagicNumberConversion) {
 }
 
 TEST(DepthTest, EveryFunction) {
-  struct Case { GLenum func; bool less, equal, greater; };
-  const Case cases[] = {{GL_NEVER, false, false, false},   {GL_LESS, true, false, false},
-                        {GL_EQUAL, false, true, false},    {GL_LEQUAL, true, true, false},
-                        {GL_GREATER, false, false, true},  {GL_NOTEQUAL, true, false, true},
-                        {GL_GEQUAL, false, true, true},    {GL_ALWAYS, true, true, true}};
+  struct Case {
+    GLenum func;
+    bool less, equal, greater;
+  };
+  const Case cases[] = {{GL_NEVER, false, false, false},  {GL_LESS, true, false, false},
+                        {GL_EQUAL, false, true, false},   {GL_LEQUAL, true, true, false},
+                        {GL_GREATER, false, false, true}, {GL_NOTEQUAL, true, false, true},
+                        {GL_GEQUAL, false, true, true},   {GL_ALWAYS, true, true, true}};
   for (const Case& c : cases) {
     EXPECT_EQ(depthPasses(c.func, 1, 2), c.less) << c.func;
     EXPECT_EQ(depthPasses(c.func, 2, 2), c.equal) << c.func;
@@ -53,8 +56,10 @@ TEST(DepthTest, NearerTriangleWinsWithLessAndWritesDepth) {
   st.depthTest = true;
   st.depthFunc = GL_LESS;
   auto quad = [&](float z, float r, float g) {
-    drawTriangle(st, s.fb, s.vertex(0, 0, z, r, g, 0), s.vertex(8, 0, z, r, g, 0), s.vertex(0, 8, z, r, g, 0), nullptr);
-    drawTriangle(st, s.fb, s.vertex(8, 0, z, r, g, 0), s.vertex(8, 8, z, r, g, 0), s.vertex(0, 8, z, r, g, 0), nullptr);
+    drawTriangle(st, s.fb, s.vertex(0, 0, z, r, g, 0), s.vertex(8, 0, z, r, g, 0), s.vertex(0, 8, z, r, g, 0),
+                 nullptr);
+    drawTriangle(st, s.fb, s.vertex(8, 0, z, r, g, 0), s.vertex(8, 8, z, r, g, 0), s.vertex(0, 8, z, r, g, 0),
+                 nullptr);
   };
   quad(0.25f, 1, 0);
   quad(0.75f, 0, 1);  // behind: fails

@@ -13,7 +13,8 @@ namespace {
 using test::TestSurface;
 
 // Draws and returns the set of covered pixels (GL window coordinates).
-std::vector<bool> coverage(TestSurface& s, const WindowVertex& a, const WindowVertex& b, const WindowVertex& c) {
+std::vector<bool> coverage(TestSurface& s, const WindowVertex& a, const WindowVertex& b,
+                           const WindowVertex& c) {
   s.clear();
   drawTriangle(s.state(), s.fb, a, b, c, nullptr);
   std::vector<bool> out(size_t(s.width()) * s.height());
@@ -81,7 +82,8 @@ TEST(FillRule, SharedEdgesAreCoveredExactlyOnce) {
       auto cov = coverage(s, s.vertex(cx, cy), ring[i], ring[(i + 1) % spokes]);
       for (size_t k = 0; k < cov.size(); ++k) count[k] += cov[k];
     }
-    for (size_t k = 0; k < count.size(); ++k) ASSERT_LE(count[k], 1) << "iteration " << iter << " pixel " << k;
+    for (size_t k = 0; k < count.size(); ++k)
+      ASSERT_LE(count[k], 1) << "iteration " << iter << " pixel " << k;
   }
 }
 

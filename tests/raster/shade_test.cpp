@@ -27,7 +27,8 @@ TEST(Shade, Avx2MatchesScalar) {
   if (!haveAvx2Fma()) GTEST_SKIP() << "no AVX2/FMA on this CPU";
   std::mt19937 rng(5);
   std::uniform_real_distribution<float> pos(-4, 44), unit(0, 1);
-  const GLenum funcs[] = {GL_LESS, GL_LEQUAL, GL_EQUAL, GL_GREATER, GL_GEQUAL, GL_NOTEQUAL, GL_ALWAYS, GL_NEVER};
+  const GLenum funcs[] = {GL_LESS,   GL_LEQUAL,   GL_EQUAL,  GL_GREATER,
+                          GL_GEQUAL, GL_NOTEQUAL, GL_ALWAYS, GL_NEVER};
   for (int iter = 0; iter < 600; ++iter) {
     const int depthBits = iter % 3 == 0 ? 16 : 24;
     TestSurface a(40, 40, depthBits), b(40, 40, depthBits);

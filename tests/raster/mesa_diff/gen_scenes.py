@@ -5,7 +5,8 @@ usage: gen_scenes.py KIND SEED FRAMES > scene.txt
 KIND: grid (vertices on the half-pixel grid), flat2d (w = 1, a little outside
 the view volume), persp (random w, inside), clip (anything, w < 0 too), tiny,
 sliver, near (w close to 0), mix (all of these).
-Environment: DEPTH=16|24 forces the depth buffer size, SIZE=WxH the buffer.
+Environment: DEPTH=16|24 forces the depth buffer size, SIZE=WxH the buffer,
+CONST=p the probability of constant (non-per-vertex) colours in a frame.
 """
 import random, sys, os
 
@@ -76,6 +77,7 @@ for fr in range(frames):
     out.append(f"colorsum {int(cs)}")
     ts = R.random() < 0.25
     out.append(f"twoside {int(ts)}")
+    out.append(f"constcolor {int(R.random() < float(os.environ.get('CONST', '0.2')))}")
     for p in range(R.randint(1, 6)):
         mode = R.choice(['TRIANGLES', 'TRIANGLES', 'TRIANGLE_STRIP', 'TRIANGLE_FAN', 'QUADS', 'QUAD_STRIP', 'POLYGON'])
         n = {'TRIANGLES': 3 * R.randint(1, 4), 'QUADS': 4 * R.randint(1, 3)}.get(mode, R.randint(3, 9))

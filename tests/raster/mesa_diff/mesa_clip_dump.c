@@ -23,7 +23,7 @@ int main(int argc, char **argv) {
   int W = 0, H = 0, depthBits = 24;
   OSMesaContext ctx = NULL;
   unsigned char *buf = NULL;
-  int twoside = 0;
+  int twoside = 0, constcolor = 0;
   FILE *out = fopen(argv[2], "wb");
   if (!out) { perror(argv[2]); return 2; }
   while (fscanf(f, "%63s", cmd) == 1) {
@@ -58,6 +58,10 @@ int main(int argc, char **argv) {
       glDepthRange(n, fa);
     } else if (!strcmp(cmd, "colorsum")) {
       if (ri(f)) glEnable(GL_COLOR_SUM); else glDisable(GL_COLOR_SUM);
+    } else if (!strcmp(cmd, "constcolor")) {
+      /* colours given once, before glBegin, after a flush: Mesa then reads
+       * them as constants (see primitive.h, constantPrimary) */
+      constcolor = ri(f);
     } else if (!strcmp(cmd, "twoside")) {
       twoside = ri(f);
       if (twoside) {
@@ -73,23 +77,31 @@ int main(int argc, char **argv) {
       }
     } else if (!strcmp(cmd, "begin")) {
       int mode = ri(f), n = ri(f);
-      glBegin(mode);
+      if (constcolor) {
+        /* a flush (a real state change), then the colours, then glBegin */
+        GLint sm; glGetIntegerv(GL_SHADE_MODEL, &sm);
+        glShadeModel(sm == GL_FLAT ? GL_SMOOTH : GL_FLAT); glShadeModel(sm);
+      }
       for (int i = 0; i < n; i++) {
         float p[4], c[4], s[3], b[4];
         for (int k = 0; k < 4; k++) p[k] = rf(f);
         for (int k = 0; k < 4; k++) c[k] = rf(f);
         for (int k = 0; k < 3; k++) s[k] = rf(f);
         for (int k = 0; k < 4; k++) b[k] = rf(f);
+        if (i == 0) {
+          if (constcolor && !twoside) { glColor4fv(c); glSecondaryColor3fv(s); }
+          glBegin(mode);
+        }
         if (twoside) {
           float fd[4] = {0, 0, 0, c[3]}, bd[4] = {0, 0, 0, b[3]};
           glMaterialfv(GL_FRONT, GL_EMISSION, c);
           glMaterialfv(GL_FRONT, GL_DIFFUSE, fd);
           glMaterialfv(GL_BACK, GL_EMISSION, b);
           glMaterialfv(GL_BACK, GL_DIFFUSE, bd);
-        } else {
+        } else if (!constcolor) {
           glColor4fv(c);
         }
-        glSecondaryColor3fv(s);
+        if (!constcolor) glSecondaryColor3fv(s);
         glVertex4fv(p);
       }
       glEnd();

@@ -3,7 +3,7 @@
 # Debian 12's packages. Run as root (or it uses sudo).
 set -euo pipefail
 packages=(
-  build-essential cmake pkg-config
+  build-essential cmake pkg-config python3
   libglm-dev libgtest-dev libpng-dev
   libosmesa6-dev libglu1-mesa-dev   # Mesa's OSMesa: the reference renderer
   khronos-api                       # gl.xml, for tools/gen_gl_header.py

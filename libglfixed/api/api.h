@@ -12,14 +12,23 @@ namespace glfixed::api {
 // The current context, or null: a call with no current context does nothing.
 inline Context* context() { return currentContext(); }
 
-// The current context if the call may run now; null (after recording
-// GL_INVALID_OPERATION when inside glBegin/glEnd) if it must do nothing.
-inline Context* contextOutsideBeginEnd() {
+// For a query: the current context if the call may run now; null (after
+// recording GL_INVALID_OPERATION when inside glBegin/glEnd) if it must do
+// nothing.
+inline Context* contextForQuery() {
   Context* ctx = currentContext();
   if (ctx && ctx->insideBeginEnd) {
     ctx->recordError(GL_INVALID_OPERATION);
     return nullptr;
   }
+  return ctx;
+}
+
+// The same for a command that changes state or draws: like Mesa it ends the
+// run of buffered glBegin/glEnd vertices first (Context::vbo).
+inline Context* contextOutsideBeginEnd() {
+  Context* ctx = contextForQuery();
+  if (ctx) ctx->flushVertices();
   return ctx;
 }
 

@@ -129,7 +129,7 @@ bool queryState(Context& ctx, GLenum pname, StateValue& out) {
 
 // Looks the value up, or records the error the query raises.
 bool lookUp(GLenum pname, const void* params, StateValue& value) {
-  Context* ctx = api::contextOutsideBeginEnd();
+  Context* ctx = api::contextForQuery();
   if (!ctx || !params) return false;
   if (!queryState(*ctx, pname, value)) {
     ctx->recordError(GL_INVALID_ENUM);
@@ -169,7 +169,7 @@ GLAPI GLenum APIENTRY glGetError(void) {
 }
 
 GLAPI const GLubyte* APIENTRY glGetString(GLenum name) {
-  Context* ctx = api::contextOutsideBeginEnd();
+  Context* ctx = api::contextForQuery();
   if (!ctx) return nullptr;
   const char* s = nullptr;
   switch (name) {

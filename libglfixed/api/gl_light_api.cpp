@@ -221,6 +221,7 @@ void lightModeliv(GLenum pname, const GLint* params) {
 void materialfv(GLenum face, GLenum pname, const GLfloat* params) {
   Context* ctx = currentContext();
   if (!ctx) return;
+  if (!ctx->insideBeginEnd) ctx->flushVertices();  // a state change, as for every command outside
   // The faces to update; components that follow the colour are left alone
   // while GL_COLOR_MATERIAL is on (Mesa skips them silently).
   uint32_t faces;  // bit 0 front, bit 1 back
@@ -350,7 +351,7 @@ GLAPI void APIENTRY glLighti(GLenum light, GLenum pname, GLint param) {
 }
 
 GLAPI void APIENTRY glGetLightfv(GLenum light, GLenum pname, GLfloat* params) {
-  Context* ctx = api::contextOutsideBeginEnd();
+  Context* ctx = api::contextForQuery();
   if (!ctx) return;
   GLfloat v[4];
   int count = 0;
@@ -359,7 +360,7 @@ GLAPI void APIENTRY glGetLightfv(GLenum light, GLenum pname, GLfloat* params) {
 }
 
 GLAPI void APIENTRY glGetLightiv(GLenum light, GLenum pname, GLint* params) {
-  Context* ctx = api::contextOutsideBeginEnd();
+  Context* ctx = api::contextForQuery();
   if (!ctx) return;
   GLfloat v[4];
   int count = 0;
@@ -394,7 +395,7 @@ GLAPI void APIENTRY glMateriali(GLenum face, GLenum pname, GLint param) {
 }
 
 GLAPI void APIENTRY glGetMaterialfv(GLenum face, GLenum pname, GLfloat* params) {
-  Context* ctx = api::contextOutsideBeginEnd();
+  Context* ctx = api::contextForQuery();
   if (!ctx) return;
   const Material* m = materialForQuery(ctx, face);
   if (!m) return;
@@ -413,7 +414,7 @@ GLAPI void APIENTRY glGetMaterialfv(GLenum face, GLenum pname, GLfloat* params) 
 }
 
 GLAPI void APIENTRY glGetMaterialiv(GLenum face, GLenum pname, GLint* params) {
-  Context* ctx = api::contextOutsideBeginEnd();
+  Context* ctx = api::contextForQuery();
   if (!ctx) return;
   const Material* m = materialForQuery(ctx, face);
   if (!m) return;

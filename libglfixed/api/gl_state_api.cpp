@@ -22,12 +22,18 @@ bool* coreCapability(Context& ctx, GLenum cap) {
 }
 
 void setCapability(GLenum cap, bool enabled) {
-  Context* ctx = api::contextOutsideBeginEnd();
+  Context* ctx = api::contextForQuery();
   if (!ctx) return;
   if (bool* flag = coreCapability(*ctx, cap)) {
+    if (*flag == enabled) return;  // no change: nothing is flushed
+    ctx->flushVertices();
     *flag = enabled;
     return;
   }
+  GLdouble current[16];
+  int count = 0;
+  if (getLightingState(*ctx, cap, current, &count) && count == 1 && (current[0] != 0) == enabled) return;
+  ctx->flushVertices();
   if (!setLightingCapability(*ctx, cap, enabled)) ctx->recordError(GL_INVALID_ENUM);
 }
 
@@ -39,7 +45,7 @@ GLAPI void APIENTRY glEnable(GLenum cap) { setCapability(cap, true); }
 GLAPI void APIENTRY glDisable(GLenum cap) { setCapability(cap, false); }
 
 GLAPI GLboolean APIENTRY glIsEnabled(GLenum cap) {
-  Context* ctx = api::contextOutsideBeginEnd();
+  Context* ctx = api::contextForQuery();
   if (!ctx) return GL_FALSE;
   if (bool* flag = coreCapability(*ctx, cap)) return *flag ? GL_TRUE : GL_FALSE;
   GLdouble v[16];

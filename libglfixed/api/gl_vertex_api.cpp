@@ -35,7 +35,8 @@ void color(float r, float g, float b, float a) {
   Context* ctx = currentContext();
   if (!ctx) return;
   ctx->current.color = glm::vec4(r, g, b, a);
-  if (ctx->lighting.colorMaterial && !ctx->insideBeginEnd) trackColorMaterial(*ctx);
+  if (ctx->insideBeginEnd || ctx->vbo.verticesBuffered) ctx->vbo.colorIsVertexData = true;
+  if (!ctx->insideBeginEnd && ctx->lighting.colorMaterial) trackColorMaterial(*ctx);
 }
 
 template <typename T>
@@ -61,7 +62,8 @@ void normal3(T x, T y, T z) {
 extern "C" {
 
 GLAPI void APIENTRY glBegin(GLenum mode) {
-  Context* ctx = api::contextOutsideBeginEnd();
+  // Not a state change: Mesa keeps buffering vertices across glBegin.
+  Context* ctx = api::contextForQuery();
   if (!ctx) return;
   if (mode > GL_POLYGON) {
     ctx->recordError(GL_INVALID_ENUM);
@@ -79,6 +81,7 @@ GLAPI void APIENTRY glEnd(void) {
     return;
   }
   ctx->insideBeginEnd = false;
+  if (ctx->batch.size() > 0) ctx->vbo.verticesBuffered = true;
   pipeline::drawBatch(*ctx, ctx->batch);
   if (ctx->lighting.colorMaterial) trackColorMaterial(*ctx);
 }

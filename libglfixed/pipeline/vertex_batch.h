@@ -25,7 +25,6 @@ struct VertexBatch {
   // materials[materialIndex[i]]. materials[0] is the material at glBegin.
   std::vector<uint32_t> materialIndex;
   std::vector<MaterialPair> materials;
-
   size_t size() const { return position.size(); }
   void reset(GLenum primitiveMode, const MaterialPair& current) {
     mode = primitiveMode;

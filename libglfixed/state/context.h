@@ -45,6 +45,18 @@ class Context {
   bool insideBeginEnd = false;
   VertexBatch batch;
 
+  // What Mesa's vbo module would hold (REFERENCE: "constant colours"): the
+  // vertices of consecutive glBegin/glEnd pairs stay buffered until a state
+  // change flushes them, and a colour becomes per-vertex data once glColor is
+  // called between glBegin and glEnd, or outside while vertices are buffered.
+  // Until then the colour reaches Mesa's fragment shader as a constant, which
+  // is never interpolated. Only which of the two rounds the pixels differs.
+  struct VboFormat {
+    bool verticesBuffered = false;
+    bool colorIsVertexData = false;
+  } vbo;
+  void flushVertices() { vbo = VboFormat(); }
+
   // Errors (GL 2.1 §2.5): the first error is kept until glGetError reads it.
   void recordError(GLenum error) {
     if (error_ == GL_NO_ERROR) error_ = error;

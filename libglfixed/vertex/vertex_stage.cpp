@@ -1,17 +1,28 @@
 #include "vertex/vertex_stage.h"
 
-#include <algorithm>
+#include "vertex/lighting_math.h"
 
 namespace glfixed::vertex {
 
 namespace {
-glm::vec4 clampColor(const glm::vec4& c) { return glm::clamp(c, glm::vec4(0.0f), glm::vec4(1.0f)); }
+
+// clip = MVP * position as Mesa's vertex program evaluates it: a multiply and
+// three multiply-adds down the columns, each rounded, in this order
+// (ffvertex_prog.c; glm's operator* pairs the terms differently, which moves
+// depth and, at ties, coverage).
+inline glm::vec4 transformPosition(const glm::mat4& m, const glm::vec4& p) {
+  glm::vec4 r = m[0] * p.x;
+  r = m[1] * p.y + r;
+  r = m[2] * p.z + r;
+  return m[3] * p.w + r;
+}
+
 }  // namespace
 
 void shadeBatch(const VertexState& state, const VertexBatch& batch, ShadedVertices& out) {
   const size_t n = batch.size();
   out.clip.resize(n);
-  for (size_t i = 0; i < n; ++i) out.clip[i] = state.clipFromObject * batch.position[i];
+  for (size_t i = 0; i < n; ++i) out.clip[i] = transformPosition(state.clipFromObject, batch.position[i]);
 
   out.hasBack = false;
   out.hasSecondary = false;
@@ -19,9 +30,10 @@ void shadeBatch(const VertexState& state, const VertexBatch& batch, ShadedVertic
     lightBatch(state, batch, out);
     return;
   }
-  // Unlit: the current colour at each vertex, clamped (GL 2.1 §2.14.8).
+  // Unlit: the current colour at each vertex, clamped as llvmpipe clamps
+  // (GL 2.1 §2.14.8; NaN becomes 1).
   out.primary[kFront].resize(n);
-  for (size_t i = 0; i < n; ++i) out.primary[kFront][i] = clampColor(batch.color[i]);
+  for (size_t i = 0; i < n; ++i) out.primary[kFront][i] = lp::clampColor(batch.color[i]);
 }
 
 }  // namespace glfixed::vertex

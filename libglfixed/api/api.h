@@ -5,6 +5,7 @@
 
 #include <GL/gl.h>
 
+#include "pipeline/immediate_mode.h"
 #include "state/context.h"
 
 namespace glfixed::api {
@@ -28,7 +29,7 @@ inline Context* contextForQuery() {
 // run of buffered glBegin/glEnd vertices first (Context::vbo).
 inline Context* contextOutsideBeginEnd() {
   Context* ctx = contextForQuery();
-  if (ctx) ctx->flushVertices();
+  if (ctx) pipeline::flushVertices(*ctx);
   return ctx;
 }
 

@@ -221,7 +221,7 @@ void lightModeliv(GLenum pname, const GLint* params) {
 void materialfv(GLenum face, GLenum pname, const GLfloat* params) {
   Context* ctx = currentContext();
   if (!ctx) return;
-  if (!ctx->insideBeginEnd) ctx->flushVertices();  // a state change, as for every command outside
+  if (!ctx->insideBeginEnd) pipeline::flushVertices(*ctx);  // a state change, as for every command outside
   // The faces to update; components that follow the colour are left alone
   // while GL_COLOR_MATERIAL is on (Mesa skips them silently).
   uint32_t faces;  // bit 0 front, bit 1 back

@@ -26,14 +26,14 @@ void setCapability(GLenum cap, bool enabled) {
   if (!ctx) return;
   if (bool* flag = coreCapability(*ctx, cap)) {
     if (*flag == enabled) return;  // no change: nothing is flushed
-    ctx->flushVertices();
+    pipeline::flushVertices(*ctx);
     *flag = enabled;
     return;
   }
   GLdouble current[16];
   int count = 0;
   if (getLightingState(*ctx, cap, current, &count) && count == 1 && (current[0] != 0) == enabled) return;
-  ctx->flushVertices();
+  pipeline::flushVertices(*ctx);
   if (!setLightingCapability(*ctx, cap, enabled)) ctx->recordError(GL_INVALID_ENUM);
 }
 

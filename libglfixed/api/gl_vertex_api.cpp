@@ -1,7 +1,7 @@
 // glBegin/glEnd and the current vertex attributes: glVertex, glColor, glNormal
 // (GL 2.1 §2.6-§2.7), every variant.
 #include "api/api.h"
-#include "pipeline/draw.h"
+#include "pipeline/immediate_mode.h"
 #include "vertex/color_material.h"
 
 using namespace glfixed;
@@ -34,9 +34,12 @@ void addVertex(float x, float y, float z, float w) {
 void color(float r, float g, float b, float a) {
   Context* ctx = currentContext();
   if (!ctx) return;
+  if (ctx->insideBeginEnd || ctx->vbo.verticesBuffered) pipeline::colorBecomesVertexData(*ctx);
   ctx->current.color = glm::vec4(r, g, b, a);
-  if (ctx->insideBeginEnd || ctx->vbo.verticesBuffered) ctx->vbo.colorIsVertexData = true;
-  if (!ctx->insideBeginEnd && ctx->lighting.colorMaterial) trackColorMaterial(*ctx);
+  if (!ctx->insideBeginEnd && ctx->lighting.colorMaterial) {
+    pipeline::drawPending(*ctx);  // the material changes: what is pending was lit with the old one
+    trackColorMaterial(*ctx);
+  }
 }
 
 template <typename T>
@@ -81,8 +84,7 @@ GLAPI void APIENTRY glEnd(void) {
     return;
   }
   ctx->insideBeginEnd = false;
-  if (ctx->batch.size() > 0) ctx->vbo.verticesBuffered = true;
-  pipeline::drawBatch(*ctx, ctx->batch);
+  pipeline::endPrimitive(*ctx);
   if (ctx->lighting.colorMaterial) trackColorMaterial(*ctx);
 }
 

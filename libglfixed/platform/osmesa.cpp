@@ -7,6 +7,7 @@
 #include <cstring>
 
 #include "api/entry_points.h"
+#include "pipeline/immediate_mode.h"
 #include "state/context.h"
 
 using glfixed::Context;
@@ -119,6 +120,7 @@ GLAPI OSMesaContext APIENTRY OSMesaCreateContextAttribs(const int* attribList, O
 
 GLAPI void APIENTRY OSMesaDestroyContext(OSMesaContext ctx) {
   if (!ctx) return;
+  glfixed::pipeline::flushVertices(ctx->context);
   if (tCurrent == ctx) {
     tCurrent = nullptr;
     glfixed::setCurrentContext(nullptr);
@@ -128,6 +130,8 @@ GLAPI void APIENTRY OSMesaDestroyContext(OSMesaContext ctx) {
 
 GLAPI GLboolean APIENTRY OSMesaMakeCurrent(OSMesaContext ctx, void* buffer, GLenum type, GLsizei width,
                                            GLsizei height) {
+  // What the current context still holds is drawn into its buffer first.
+  if (tCurrent) glfixed::pipeline::flushVertices(tCurrent->context);
   if (!ctx && !buffer) {  // release the current context
     tCurrent = nullptr;
     glfixed::setCurrentContext(nullptr);
@@ -208,6 +212,7 @@ GLAPI GLboolean APIENTRY OSMesaGetDepthBuffer(OSMesaContext c, GLint* width, GLi
     if (buffer) *buffer = nullptr;
     return GL_FALSE;
   }
+  glfixed::pipeline::flushVertices(c->context);
   glfixed::DepthBuffer& d = c->context.framebuffer.depth;
   if (width) *width = d.width();
   if (height) *height = d.height();
@@ -225,6 +230,7 @@ GLAPI GLboolean APIENTRY OSMesaGetColorBuffer(OSMesaContext c, GLint* width, GLi
     if (buffer) *buffer = nullptr;
     return GL_FALSE;
   }
+  glfixed::pipeline::flushVertices(c->context);
   if (width) *width = c->width;
   if (height) *height = c->height;
   if (format) *format = static_cast<GLint>(osmesaFormatOf(c->format));

@@ -55,7 +55,9 @@ class Context {
     bool verticesBuffered = false;
     bool colorIsVertexData = false;
   } vbo;
-  void flushVertices() { vbo = VboFormat(); }
+  // The primitives of consecutive glBegin/glEnd pairs Mesa would draw as one
+  // (pipeline/immediate_mode.h); drawn when a state change flushes them.
+  VertexBatch pending;
 
   // Errors (GL 2.1 §2.5): the first error is kept until glGetError reads it.
   void recordError(GLenum error) {

@@ -1,0 +1,80 @@
+#include "pipeline/immediate_mode.h"
+
+#include "pipeline/draw.h"
+#include "primitive/merge.h"
+#include "state/context.h"
+
+namespace glfixed::pipeline {
+
+namespace {
+
+// Mesa drops the vertices of an incomplete last primitive before it merges.
+size_t wholePrimitives(GLenum mode, size_t n) {
+  switch (mode) {
+    case GL_LINES: return n - n % 2;
+    case GL_TRIANGLES: return n - n % 3;
+    case GL_QUADS: return n - n % 4;
+    default: return n;
+  }
+}
+
+void truncate(VertexBatch& b, size_t n) {
+  b.position.resize(n);
+  b.normal.resize(n);
+  b.color.resize(n);
+  b.materialIndex.resize(n);
+}
+
+void append(VertexBatch& to, const VertexBatch& from) {
+  to.position.insert(to.position.end(), from.position.begin(), from.position.end());
+  to.normal.insert(to.normal.end(), from.normal.begin(), from.normal.end());
+  to.color.insert(to.color.end(), from.color.begin(), from.color.end());
+  to.materialIndex.insert(to.materialIndex.end(), from.materialIndex.begin(), from.materialIndex.end());
+}
+
+}  // namespace
+
+void drawPending(Context& ctx) {
+  if (ctx.pending.size() == 0) return;
+  drawBatch(ctx, ctx.pending);
+  ctx.pending.position.clear();
+  ctx.pending.normal.clear();
+  ctx.pending.color.clear();
+  ctx.pending.materialIndex.clear();
+}
+
+void endPrimitive(Context& ctx) {
+  VertexBatch& b = ctx.batch;
+  if (b.size() == 0) return;
+  ctx.vbo.verticesBuffered = true;
+  b.mode = primitive::mesaConvertedMode(b.mode, static_cast<uint32_t>(b.size()));
+  truncate(b, wholePrimitives(b.mode, b.size()));
+  // A batch with glMaterial inside is drawn at once: its per-vertex material
+  // state (LightingAttrib::beginEndMaterialMask) belongs to it alone.
+  const bool perVertexMaterial = b.materials.size() > 1;
+  VertexBatch& p = ctx.pending;
+  if (!perVertexMaterial && p.size() > 0 && p.materials.size() == 1 &&
+      primitive::mesaMergesPrimitives(p.mode, static_cast<uint32_t>(p.size()), b.mode)) {
+    append(p, b);
+    return;
+  }
+  drawPending(ctx);
+  if (perVertexMaterial) {
+    drawBatch(ctx, b);
+    return;
+  }
+  std::swap(p, b);  // b's vectors are reset at the next glBegin
+}
+
+void flushVertices(Context& ctx) {
+  drawPending(ctx);
+  ctx.vbo = Context::VboFormat();
+}
+
+void colorBecomesVertexData(Context& ctx) {
+  if (ctx.vbo.colorIsVertexData) return;
+  drawPending(ctx);
+  ctx.vbo.colorIsVertexData = true;
+}
+
+}  // namespace glfixed::pipeline

@@ -3,6 +3,7 @@
 // flag. They are state now; the stages that use them come with texturing, fog
 // and polygon modes.
 #include "api/api.h"
+#include "api/normalized.h"
 
 using namespace glfixed;
 
@@ -10,15 +11,7 @@ namespace {
 
 constexpr int kMaxTextureCoords = 8;
 
-// Table 2.9, as in gl_vertex_api.cpp (Mesa's single-precision forms).
-inline float normalized(GLbyte c) { return (2.0f * c + 1.0f) * (1.0f / 255.0f); }
-inline float normalized(GLshort c) { return (2.0f * c + 1.0f) * (1.0f / 65535.0f); }
-inline float normalized(GLint c) { return static_cast<float>((2.0f * c + 1.0f) * (1.0 / 4294967294.0)); }
-inline float normalized(GLubyte c) { return static_cast<float>(c) / 255.0f; }
-inline float normalized(GLushort c) { return static_cast<float>(c) * (1.0f / 65535.0f); }
-inline float normalized(GLuint c) { return static_cast<float>(c * (1.0 / 4294967295.0)); }
-inline float normalized(GLfloat c) { return c; }
-inline float normalized(GLdouble c) { return static_cast<float>(c); }
+using api::normalized;
 
 void texCoord(GLenum unit, float s, float t, float r, float q) {
   Context* ctx = currentContext();

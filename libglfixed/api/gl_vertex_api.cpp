@@ -1,6 +1,7 @@
 // glBegin/glEnd and the current vertex attributes: glVertex, glColor, glNormal
 // (GL 2.1 §2.6-§2.7), every variant.
 #include "api/api.h"
+#include "api/normalized.h"
 #include "pipeline/immediate_mode.h"
 #include "vertex/color_material.h"
 
@@ -8,17 +9,7 @@ using namespace glfixed;
 
 namespace {
 
-// Integer to float conversions of GL 2.1 table 2.9, evaluated as Mesa does
-// (a multiply by the reciprocal, in single precision): signed c maps to
-// (2c + 1) / (2^b - 1), unsigned c to c / (2^b - 1).
-inline float normalized(GLbyte c) { return (2.0f * c + 1.0f) * (1.0f / 255.0f); }
-inline float normalized(GLshort c) { return (2.0f * c + 1.0f) * (1.0f / 65535.0f); }
-inline float normalized(GLint c) { return static_cast<float>((2.0f * c + 1.0f) * (1.0 / 4294967294.0)); }
-inline float normalized(GLubyte c) { return static_cast<float>(c) / 255.0f; }
-inline float normalized(GLushort c) { return static_cast<float>(c) * (1.0f / 65535.0f); }
-inline float normalized(GLuint c) { return static_cast<float>(c * (1.0 / 4294967295.0)); }
-inline float normalized(GLfloat c) { return c; }
-inline float normalized(GLdouble c) { return static_cast<float>(c); }
+using api::normalized;
 
 void addVertex(float x, float y, float z, float w) {
   Context* ctx = currentContext();

@@ -336,6 +336,7 @@ const Material* materialForQuery(Context* ctx, GLenum face) {
 extern "C" {
 
 GLAPI void APIENTRY glLightfv(GLenum light, GLenum pname, const GLfloat* params) {
+  if (!params) return;  // a null array is ignored, never read
   lightfv(light, pname, params);
 }
 GLAPI void APIENTRY glLightf(GLenum light, GLenum pname, GLfloat param) {
@@ -343,6 +344,7 @@ GLAPI void APIENTRY glLightf(GLenum light, GLenum pname, GLfloat param) {
   lightfv(light, pname, f);
 }
 GLAPI void APIENTRY glLightiv(GLenum light, GLenum pname, const GLint* params) {
+  if (!params) return;  // a null array is ignored, never read
   lightiv(light, pname, params);
 }
 GLAPI void APIENTRY glLighti(GLenum light, GLenum pname, GLint param) {
@@ -351,6 +353,7 @@ GLAPI void APIENTRY glLighti(GLenum light, GLenum pname, GLint param) {
 }
 
 GLAPI void APIENTRY glGetLightfv(GLenum light, GLenum pname, GLfloat* params) {
+  if (!params) return;  // a null array is ignored, never read
   Context* ctx = api::contextForQuery();
   if (!ctx) return;
   GLfloat v[4];
@@ -360,6 +363,7 @@ GLAPI void APIENTRY glGetLightfv(GLenum light, GLenum pname, GLfloat* params) {
 }
 
 GLAPI void APIENTRY glGetLightiv(GLenum light, GLenum pname, GLint* params) {
+  if (!params) return;  // a null array is ignored, never read
   Context* ctx = api::contextForQuery();
   if (!ctx) return;
   GLfloat v[4];
@@ -368,18 +372,25 @@ GLAPI void APIENTRY glGetLightiv(GLenum light, GLenum pname, GLint* params) {
   for (int j = 0; j < count; ++j) params[j] = isColorPname(pname) ? colorToInt(v[j]) : truncateToInt(v[j]);
 }
 
-GLAPI void APIENTRY glLightModelfv(GLenum pname, const GLfloat* params) { lightModelfv(pname, params); }
+GLAPI void APIENTRY glLightModelfv(GLenum pname, const GLfloat* params) {
+  if (!params) return;  // a null array is ignored, never read
+  lightModelfv(pname, params);
+}
 GLAPI void APIENTRY glLightModelf(GLenum pname, GLfloat param) {
   const GLfloat f[4] = {param, 0, 0, 0};
   lightModelfv(pname, f);
 }
-GLAPI void APIENTRY glLightModeliv(GLenum pname, const GLint* params) { lightModeliv(pname, params); }
+GLAPI void APIENTRY glLightModeliv(GLenum pname, const GLint* params) {
+  if (!params) return;  // a null array is ignored, never read
+  lightModeliv(pname, params);
+}
 GLAPI void APIENTRY glLightModeli(GLenum pname, GLint param) {
   const GLint v[4] = {param, 0, 0, 0};
   lightModeliv(pname, v);
 }
 
 GLAPI void APIENTRY glMaterialfv(GLenum face, GLenum pname, const GLfloat* params) {
+  if (!params) return;  // a null array is ignored, never read
   materialfv(face, pname, params);
 }
 GLAPI void APIENTRY glMaterialf(GLenum face, GLenum pname, GLfloat param) {
@@ -387,6 +398,7 @@ GLAPI void APIENTRY glMaterialf(GLenum face, GLenum pname, GLfloat param) {
   materialfv(face, pname, f);
 }
 GLAPI void APIENTRY glMaterialiv(GLenum face, GLenum pname, const GLint* params) {
+  if (!params) return;  // a null array is ignored, never read
   materialiv(face, pname, params);
 }
 GLAPI void APIENTRY glMateriali(GLenum face, GLenum pname, GLint param) {
@@ -395,6 +407,7 @@ GLAPI void APIENTRY glMateriali(GLenum face, GLenum pname, GLint param) {
 }
 
 GLAPI void APIENTRY glGetMaterialfv(GLenum face, GLenum pname, GLfloat* params) {
+  if (!params) return;  // a null array is ignored, never read
   Context* ctx = api::contextForQuery();
   if (!ctx) return;
   const Material* m = materialForQuery(ctx, face);
@@ -414,6 +427,7 @@ GLAPI void APIENTRY glGetMaterialfv(GLenum face, GLenum pname, GLfloat* params) 
 }
 
 GLAPI void APIENTRY glGetMaterialiv(GLenum face, GLenum pname, GLint* params) {
+  if (!params) return;  // a null array is ignored, never read
   Context* ctx = api::contextForQuery();
   if (!ctx) return;
   const Material* m = materialForQuery(ctx, face);

@@ -92,18 +92,18 @@ GLAPI void APIENTRY glVertex4s(GLshort x, GLshort y, GLshort z, GLshort w) { add
 GLAPI void APIENTRY glVertex4i(GLint x, GLint y, GLint z, GLint w) { addVertex(x, y, z, w); }
 GLAPI void APIENTRY glVertex4f(GLfloat x, GLfloat y, GLfloat z, GLfloat w) { addVertex(x, y, z, w); }
 GLAPI void APIENTRY glVertex4d(GLdouble x, GLdouble y, GLdouble z, GLdouble w) { addVertex(x, y, z, w); }
-GLAPI void APIENTRY glVertex2sv(const GLshort* v) { addVertex(v[0], v[1], 0, 1); }
-GLAPI void APIENTRY glVertex2iv(const GLint* v) { addVertex(v[0], v[1], 0, 1); }
-GLAPI void APIENTRY glVertex2fv(const GLfloat* v) { addVertex(v[0], v[1], 0, 1); }
-GLAPI void APIENTRY glVertex2dv(const GLdouble* v) { addVertex(v[0], v[1], 0, 1); }
-GLAPI void APIENTRY glVertex3sv(const GLshort* v) { addVertex(v[0], v[1], v[2], 1); }
-GLAPI void APIENTRY glVertex3iv(const GLint* v) { addVertex(v[0], v[1], v[2], 1); }
-GLAPI void APIENTRY glVertex3fv(const GLfloat* v) { addVertex(v[0], v[1], v[2], 1); }
-GLAPI void APIENTRY glVertex3dv(const GLdouble* v) { addVertex(v[0], v[1], v[2], 1); }
-GLAPI void APIENTRY glVertex4sv(const GLshort* v) { addVertex(v[0], v[1], v[2], v[3]); }
-GLAPI void APIENTRY glVertex4iv(const GLint* v) { addVertex(v[0], v[1], v[2], v[3]); }
-GLAPI void APIENTRY glVertex4fv(const GLfloat* v) { addVertex(v[0], v[1], v[2], v[3]); }
-GLAPI void APIENTRY glVertex4dv(const GLdouble* v) { addVertex(v[0], v[1], v[2], v[3]); }
+GLAPI void APIENTRY glVertex2sv(const GLshort* v) { if (v) addVertex(v[0], v[1], 0, 1); }
+GLAPI void APIENTRY glVertex2iv(const GLint* v) { if (v) addVertex(v[0], v[1], 0, 1); }
+GLAPI void APIENTRY glVertex2fv(const GLfloat* v) { if (v) addVertex(v[0], v[1], 0, 1); }
+GLAPI void APIENTRY glVertex2dv(const GLdouble* v) { if (v) addVertex(v[0], v[1], 0, 1); }
+GLAPI void APIENTRY glVertex3sv(const GLshort* v) { if (v) addVertex(v[0], v[1], v[2], 1); }
+GLAPI void APIENTRY glVertex3iv(const GLint* v) { if (v) addVertex(v[0], v[1], v[2], 1); }
+GLAPI void APIENTRY glVertex3fv(const GLfloat* v) { if (v) addVertex(v[0], v[1], v[2], 1); }
+GLAPI void APIENTRY glVertex3dv(const GLdouble* v) { if (v) addVertex(v[0], v[1], v[2], 1); }
+GLAPI void APIENTRY glVertex4sv(const GLshort* v) { if (v) addVertex(v[0], v[1], v[2], v[3]); }
+GLAPI void APIENTRY glVertex4iv(const GLint* v) { if (v) addVertex(v[0], v[1], v[2], v[3]); }
+GLAPI void APIENTRY glVertex4fv(const GLfloat* v) { if (v) addVertex(v[0], v[1], v[2], v[3]); }
+GLAPI void APIENTRY glVertex4dv(const GLdouble* v) { if (v) addVertex(v[0], v[1], v[2], v[3]); }
 
 // glColor: integer components are normalised (table 2.9); alpha 1 for glColor3.
 GLAPI void APIENTRY glColor3b(GLbyte r, GLbyte g, GLbyte b) { color3(r, g, b); }
@@ -122,22 +122,22 @@ GLAPI void APIENTRY glColor4d(GLdouble r, GLdouble g, GLdouble b, GLdouble a) { 
 GLAPI void APIENTRY glColor4ub(GLubyte r, GLubyte g, GLubyte b, GLubyte a) { color4(r, g, b, a); }
 GLAPI void APIENTRY glColor4us(GLushort r, GLushort g, GLushort b, GLushort a) { color4(r, g, b, a); }
 GLAPI void APIENTRY glColor4ui(GLuint r, GLuint g, GLuint b, GLuint a) { color4(r, g, b, a); }
-GLAPI void APIENTRY glColor3bv(const GLbyte* v) { color3(v[0], v[1], v[2]); }
-GLAPI void APIENTRY glColor3sv(const GLshort* v) { color3(v[0], v[1], v[2]); }
-GLAPI void APIENTRY glColor3iv(const GLint* v) { color3(v[0], v[1], v[2]); }
-GLAPI void APIENTRY glColor3fv(const GLfloat* v) { color3(v[0], v[1], v[2]); }
-GLAPI void APIENTRY glColor3dv(const GLdouble* v) { color3(v[0], v[1], v[2]); }
-GLAPI void APIENTRY glColor3ubv(const GLubyte* v) { color3(v[0], v[1], v[2]); }
-GLAPI void APIENTRY glColor3usv(const GLushort* v) { color3(v[0], v[1], v[2]); }
-GLAPI void APIENTRY glColor3uiv(const GLuint* v) { color3(v[0], v[1], v[2]); }
-GLAPI void APIENTRY glColor4bv(const GLbyte* v) { color4(v[0], v[1], v[2], v[3]); }
-GLAPI void APIENTRY glColor4sv(const GLshort* v) { color4(v[0], v[1], v[2], v[3]); }
-GLAPI void APIENTRY glColor4iv(const GLint* v) { color4(v[0], v[1], v[2], v[3]); }
-GLAPI void APIENTRY glColor4fv(const GLfloat* v) { color4(v[0], v[1], v[2], v[3]); }
-GLAPI void APIENTRY glColor4dv(const GLdouble* v) { color4(v[0], v[1], v[2], v[3]); }
-GLAPI void APIENTRY glColor4ubv(const GLubyte* v) { color4(v[0], v[1], v[2], v[3]); }
-GLAPI void APIENTRY glColor4usv(const GLushort* v) { color4(v[0], v[1], v[2], v[3]); }
-GLAPI void APIENTRY glColor4uiv(const GLuint* v) { color4(v[0], v[1], v[2], v[3]); }
+GLAPI void APIENTRY glColor3bv(const GLbyte* v) { if (v) color3(v[0], v[1], v[2]); }
+GLAPI void APIENTRY glColor3sv(const GLshort* v) { if (v) color3(v[0], v[1], v[2]); }
+GLAPI void APIENTRY glColor3iv(const GLint* v) { if (v) color3(v[0], v[1], v[2]); }
+GLAPI void APIENTRY glColor3fv(const GLfloat* v) { if (v) color3(v[0], v[1], v[2]); }
+GLAPI void APIENTRY glColor3dv(const GLdouble* v) { if (v) color3(v[0], v[1], v[2]); }
+GLAPI void APIENTRY glColor3ubv(const GLubyte* v) { if (v) color3(v[0], v[1], v[2]); }
+GLAPI void APIENTRY glColor3usv(const GLushort* v) { if (v) color3(v[0], v[1], v[2]); }
+GLAPI void APIENTRY glColor3uiv(const GLuint* v) { if (v) color3(v[0], v[1], v[2]); }
+GLAPI void APIENTRY glColor4bv(const GLbyte* v) { if (v) color4(v[0], v[1], v[2], v[3]); }
+GLAPI void APIENTRY glColor4sv(const GLshort* v) { if (v) color4(v[0], v[1], v[2], v[3]); }
+GLAPI void APIENTRY glColor4iv(const GLint* v) { if (v) color4(v[0], v[1], v[2], v[3]); }
+GLAPI void APIENTRY glColor4fv(const GLfloat* v) { if (v) color4(v[0], v[1], v[2], v[3]); }
+GLAPI void APIENTRY glColor4dv(const GLdouble* v) { if (v) color4(v[0], v[1], v[2], v[3]); }
+GLAPI void APIENTRY glColor4ubv(const GLubyte* v) { if (v) color4(v[0], v[1], v[2], v[3]); }
+GLAPI void APIENTRY glColor4usv(const GLushort* v) { if (v) color4(v[0], v[1], v[2], v[3]); }
+GLAPI void APIENTRY glColor4uiv(const GLuint* v) { if (v) color4(v[0], v[1], v[2], v[3]); }
 
 // glNormal: signed integer components are normalised like colours.
 GLAPI void APIENTRY glNormal3b(GLbyte x, GLbyte y, GLbyte z) { normal3(x, y, z); }
@@ -145,10 +145,10 @@ GLAPI void APIENTRY glNormal3s(GLshort x, GLshort y, GLshort z) { normal3(x, y, 
 GLAPI void APIENTRY glNormal3i(GLint x, GLint y, GLint z) { normal3(x, y, z); }
 GLAPI void APIENTRY glNormal3f(GLfloat x, GLfloat y, GLfloat z) { normal3(x, y, z); }
 GLAPI void APIENTRY glNormal3d(GLdouble x, GLdouble y, GLdouble z) { normal3(x, y, z); }
-GLAPI void APIENTRY glNormal3bv(const GLbyte* v) { normal3(v[0], v[1], v[2]); }
-GLAPI void APIENTRY glNormal3sv(const GLshort* v) { normal3(v[0], v[1], v[2]); }
-GLAPI void APIENTRY glNormal3iv(const GLint* v) { normal3(v[0], v[1], v[2]); }
-GLAPI void APIENTRY glNormal3fv(const GLfloat* v) { normal3(v[0], v[1], v[2]); }
-GLAPI void APIENTRY glNormal3dv(const GLdouble* v) { normal3(v[0], v[1], v[2]); }
+GLAPI void APIENTRY glNormal3bv(const GLbyte* v) { if (v) normal3(v[0], v[1], v[2]); }
+GLAPI void APIENTRY glNormal3sv(const GLshort* v) { if (v) normal3(v[0], v[1], v[2]); }
+GLAPI void APIENTRY glNormal3iv(const GLint* v) { if (v) normal3(v[0], v[1], v[2]); }
+GLAPI void APIENTRY glNormal3fv(const GLfloat* v) { if (v) normal3(v[0], v[1], v[2]); }
+GLAPI void APIENTRY glNormal3dv(const GLdouble* v) { if (v) normal3(v[0], v[1], v[2]); }
 
 }  // extern "C"

@@ -1,0 +1,80 @@
+/* Benchmark: a legacy program drawing lit smooth spheres in immediate mode
+ * (about 20k triangles a frame, 512x512, depth tested, 2 lights), and
+ * full-screen lit quads for fill. Built against Mesa's headers; run on Mesa
+ * and on the drop-in by bench/run_bench.sh. Prints ms per frame. */
+#include <GL/gl.h>
+#include <GL/osmesa.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+static double now(void) {
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return t.tv_sec + t.tv_nsec * 1e-9;
+}
+
+static void sphere(float cx, float cy, float cz, float r, int slices, int stacks) {
+    for (int i = 0; i < stacks; i++) {
+        float a0 = (float)M_PI * i / stacks - (float)M_PI / 2, a1 = (float)M_PI * (i + 1) / stacks - (float)M_PI / 2;
+        glBegin(GL_QUAD_STRIP);
+        for (int j = 0; j <= slices; j++) {
+            float b = 2 * (float)M_PI * j / slices;
+            float x0 = cosf(a0) * cosf(b), y0 = sinf(a0), z0 = cosf(a0) * sinf(b);
+            float x1 = cosf(a1) * cosf(b), y1 = sinf(a1), z1 = cosf(a1) * sinf(b);
+            glNormal3f(x1, y1, z1); glVertex3f(cx + r * x1, cy + r * y1, cz + r * z1);
+            glNormal3f(x0, y0, z0); glVertex3f(cx + r * x0, cy + r * y0, cz + r * z0);
+        }
+        glEnd();
+    }
+}
+
+int main(int argc, char **argv) {
+    const int w = 512, h = 512, frames = argc > 1 ? atoi(argv[1]) : 20;
+    const char *what = argc > 2 ? argv[2] : "geometry";
+    double t0 = now();
+    OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 0, 0, NULL);
+    void *buf = malloc((size_t)w * h * 4);
+    if (!ctx || !buf || !OSMesaMakeCurrent(ctx, buf, GL_UNSIGNED_BYTE, w, h)) return 2;
+    glEnable(GL_DEPTH_TEST);
+    glEnable(GL_LIGHTING);
+    glEnable(GL_LIGHT0);
+    glEnable(GL_LIGHT1);
+    const GLfloat p0[4] = {1, 1, 1, 0}, p1[4] = {-2, 1, 2, 1}, d1[4] = {0.6f, 0.5f, 0.3f, 1};
+    const GLfloat spec[4] = {1, 1, 1, 1}, diff[4] = {0.7f, 0.3f, 0.2f, 1};
+    glLightfv(GL_LIGHT0, GL_POSITION, p0);
+    glLightfv(GL_LIGHT1, GL_POSITION, p1);
+    glLightfv(GL_LIGHT1, GL_DIFFUSE, d1);
+    glMaterialfv(GL_FRONT, GL_DIFFUSE, diff);
+    glMaterialfv(GL_FRONT, GL_SPECULAR, spec);
+    glMaterialf(GL_FRONT, GL_SHININESS, 30);
+    glMatrixMode(GL_PROJECTION);
+    glFrustum(-1, 1, -1, 1, 2, 20);
+    glMatrixMode(GL_MODELVIEW);
+    glTranslatef(0, 0, -6);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glFinish();
+    double t1 = now();
+    for (int f = 0; f < frames; f++) {
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        if (strcmp(what, "fill") == 0) {
+            for (int q = 0; q < 8; q++) {  /* 8 full-screen lit quads, back to front */
+                glNormal3f(0, 0, 1);
+                glBegin(GL_QUADS);
+                glVertex3f(-3, -3, 1 - q * 0.1f); glVertex3f(3, -3, 1 - q * 0.1f);
+                glVertex3f(3, 3, 1 - q * 0.1f); glVertex3f(-3, 3, 1 - q * 0.1f);
+                glEnd();
+            }
+        } else {
+            for (int s = 0; s < 4; s++) sphere(-1.5f + s, (s % 2) - 0.5f, 0, 0.9f, 64, 40);
+        }
+        glFinish();
+    }
+    double t2 = now();
+    printf("%s: start-up + first clear %.1f ms, %.2f ms/frame\n", what, (t1 - t0) * 1e3, (t2 - t1) * 1e3 / frames);
+    OSMesaDestroyContext(ctx);
+    free(buf);
+    return 0;
+}

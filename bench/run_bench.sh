@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# Side-by-side speed of one legacy program on Mesa (llvmpipe) and on
+# libglfixed, in one run: ms per frame and the ratio. Usage, after building:
+#   bench/run_bench.sh [build-dir] [frames]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+build="${1:-build}"
+frames="${2:-20}"
+exe="$build/bench/bench_lit_spheres"
+for what in geometry fill; do
+  mesa=$(env -u LD_LIBRARY_PATH "$exe" "$frames" "$what")
+  ours=$(LD_LIBRARY_PATH="$build/dropin" "$exe" "$frames" "$what")
+  echo "Mesa       $mesa"
+  echo "libglfixed $ours"
+  m=$(sed -E 's/.* ([0-9.]+) ms\/frame/\1/' <<<"$mesa")
+  o=$(sed -E 's/.* ([0-9.]+) ms\/frame/\1/' <<<"$ours")
+  awk -v m="$m" -v o="$o" -v w="$what" 'BEGIN { printf "%s: libglfixed is %.2fx the speed of Mesa\n\n", w, m / o }'
+done
+# Whole-process start-up: load, context, one frame, exit.
+start() { local t0 t1; t0=$(date +%s%N); "$@" >/dev/null; t1=$(date +%s%N); echo $(( (t1 - t0) / 1000000 )); }
+m=$(start env -u LD_LIBRARY_PATH "$exe" 1 geometry)
+o=$(start env LD_LIBRARY_PATH="$build/dropin" "$exe" 1 geometry)
+echo "whole process, one frame: Mesa ${m} ms, libglfixed ${o} ms"

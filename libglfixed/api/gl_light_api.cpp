@@ -221,7 +221,10 @@ void lightModeliv(GLenum pname, const GLint* params) {
 void materialfv(GLenum face, GLenum pname, const GLfloat* params) {
   Context* ctx = currentContext();
   if (!ctx) return;
-  if (!ctx->insideBeginEnd) pipeline::flushVertices(*ctx);  // a state change, as for every command outside
+  // Outside glBegin/glEnd Mesa's vbo takes the material as a vertex attribute:
+  // the buffered vertices are drawn, but the vertex format is kept (a colour
+  // already per-vertex data stays so).
+  if (!ctx->insideBeginEnd) pipeline::drawPending(*ctx);
   // The faces to update; components that follow the colour are left alone
   // while GL_COLOR_MATERIAL is on (Mesa skips them silently).
   uint32_t faces;  // bit 0 front, bit 1 back

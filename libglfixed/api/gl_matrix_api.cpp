@@ -11,11 +11,13 @@ namespace {
 void multiplyCurrent(Context& ctx, const glm::mat4& m) {
   MatrixStack& stack = ctx.currentMatrixStack();
   stack.top() = stack.top() * m;
+  stack.markChanged();
   ctx.markDirty(ctx.transform.matrixMode == GL_PROJECTION ? kDirtyProjection : kDirtyModelview);
 }
 
 void loadCurrent(Context& ctx, const glm::mat4& m) {
   ctx.currentMatrixStack().top() = m;
+  ctx.currentMatrixStack().markChanged();
   ctx.markDirty(ctx.transform.matrixMode == GL_PROJECTION ? kDirtyProjection : kDirtyModelview);
 }
 
@@ -154,16 +156,20 @@ GLAPI void APIENTRY glMultTransposeMatrixd(const GLdouble* m) {
   if (ctx && m) multiplyCurrent(*ctx, glm::transpose(fromDoubles(m)));
 }
 
+// Mesa flushes neither at glPushMatrix nor at a glPopMatrix whose top was not
+// changed since the push: vertices before and after stay one draw.
 GLAPI void APIENTRY glPushMatrix(void) {
-  Context* ctx = api::contextOutsideBeginEnd();
+  Context* ctx = api::contextForQuery();
   if (!ctx) return;
   if (!ctx->currentMatrixStack().push()) ctx->recordError(GL_STACK_OVERFLOW);
 }
 
 GLAPI void APIENTRY glPopMatrix(void) {
-  Context* ctx = api::contextOutsideBeginEnd();
+  Context* ctx = api::contextForQuery();
   if (!ctx) return;
-  if (!ctx->currentMatrixStack().pop()) {
+  MatrixStack& stack = ctx->currentMatrixStack();
+  if (stack.depth() > 1 && stack.changedSincePush()) pipeline::flushVertices(*ctx);
+  if (!stack.pop()) {
     ctx->recordError(GL_STACK_UNDERFLOW);
     return;
   }

@@ -71,9 +71,38 @@ void flushVertices(Context& ctx) {
   ctx.vbo = Context::VboFormat();
 }
 
+// Mesa's vbo grows its vertex format when an attribute first becomes vertex
+// data between glBegin and glEnd (vbo_exec_wrap_upgrade_vertex): it draws the
+// buffered vertices at once, the open primitive's whole primitives as a draw
+// of their own (not merged with the pending ones), and keeps only the
+// vertices of its incomplete last primitive. So the primitives before the
+// glColor and those after it decide separately whether they need Mesa's draw
+// pipeline (assemble.h). Modelled for GL_TRIANGLES and GL_QUADS, whose kept
+// vertices are simply the incomplete last primitive.
+void drawOpenPrimitivesSoFar(Context& ctx) {
+  VertexBatch& b = ctx.batch;
+  if (b.mode != GL_TRIANGLES && b.mode != GL_QUADS) return;
+  if (b.materials.size() > 1) return;  // per-vertex material: drawn at glEnd
+  const size_t whole = wholePrimitives(b.mode, b.size());
+  if (whole == 0) return;
+  VertexBatch part;
+  part.mode = b.mode;
+  part.materials = b.materials;
+  part.position.assign(b.position.begin(), b.position.begin() + whole);
+  part.normal.assign(b.normal.begin(), b.normal.begin() + whole);
+  part.color.assign(b.color.begin(), b.color.begin() + whole);
+  part.materialIndex.assign(b.materialIndex.begin(), b.materialIndex.begin() + whole);
+  drawBatch(ctx, part);
+  b.position.erase(b.position.begin(), b.position.begin() + whole);
+  b.normal.erase(b.normal.begin(), b.normal.begin() + whole);
+  b.color.erase(b.color.begin(), b.color.begin() + whole);
+  b.materialIndex.erase(b.materialIndex.begin(), b.materialIndex.begin() + whole);
+}
+
 void colorBecomesVertexData(Context& ctx) {
   if (ctx.vbo.colorIsVertexData) return;
   drawPending(ctx);
+  if (ctx.insideBeginEnd) drawOpenPrimitivesSoFar(ctx);
   ctx.vbo.colorIsVertexData = true;
 }
 

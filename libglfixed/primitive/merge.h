@@ -9,8 +9,9 @@
 // the previous one when both have the same mode and the previous one is
 // complete (vbo_merge_draws): GL_POINTS; GL_LINES, GL_TRIANGLES, GL_QUADS
 // with a whole number of primitives. Nothing merges across a state change
-// (every state change flushes the buffered vertices first) or a full vertex
-// buffer.
+// (every state change flushes the buffered vertices first), a full vertex
+// buffer, or a growth of the vertex format (immediate_mode.cpp), which can
+// also cut one glBegin/glEnd into two draws.
 #pragma once
 
 #include <GL/gl.h>

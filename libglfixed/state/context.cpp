@@ -15,7 +15,6 @@ const vertex::VertexState& Context::validate() {
   if (dirty_ & (kDirtyModelview | kDirtyProjection)) {
     vertexState_.eyeFromObject = modelview.top();
     vertexState_.clipFromObject = projection.top() * modelview.top();
-    vertexState_.eyeNormalFromObject = glm::transpose(glm::inverse(glm::mat3(modelview.top())));
   }
   if (dirty_ & kDirtyLighting) vertex::buildLightingConstants(lighting, transform, lightingConstants_);
   vertexState_.lighting = lighting.lighting;

@@ -12,7 +12,6 @@ namespace glfixed::vertex {
 struct VertexState {
   glm::mat4 eyeFromObject{1};   // modelview
   glm::mat4 clipFromObject{1};  // projection * modelview
-  glm::mat3 eyeNormalFromObject{1};  // inverse transpose of the modelview's upper 3x3
   bool lighting = false;
   const LightingConstants* lightingConstants = nullptr;
   const LightingAttrib* lightingAttrib = nullptr;

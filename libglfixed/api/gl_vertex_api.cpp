@@ -44,7 +44,9 @@ void color4(T r, T g, T b, T a) {
 
 void normal(float x, float y, float z) {
   Context* ctx = currentContext();
-  if (ctx) ctx->current.normal = glm::vec3(x, y, z);
+  if (!ctx) return;
+  if (ctx->insideBeginEnd || ctx->vbo.verticesBuffered) pipeline::normalBecomesVertexData(*ctx);
+  ctx->current.normal = glm::vec3(x, y, z);
 }
 template <typename T>
 void normal3(T x, T y, T z) {

@@ -99,11 +99,17 @@ void drawOpenPrimitivesSoFar(Context& ctx) {
   b.materialIndex.erase(b.materialIndex.begin(), b.materialIndex.begin() + whole);
 }
 
-void colorBecomesVertexData(Context& ctx) {
-  if (ctx.vbo.colorIsVertexData) return;
+namespace {
+// An attribute becomes vertex data: the vertex format grows (see above).
+void growVertexFormat(Context& ctx, bool& isVertexData) {
+  if (isVertexData) return;
   drawPending(ctx);
   if (ctx.insideBeginEnd) drawOpenPrimitivesSoFar(ctx);
-  ctx.vbo.colorIsVertexData = true;
+  isVertexData = true;
 }
+}  // namespace
+
+void colorBecomesVertexData(Context& ctx) { growVertexFormat(ctx, ctx.vbo.colorIsVertexData); }
+void normalBecomesVertexData(Context& ctx) { growVertexFormat(ctx, ctx.vbo.normalIsVertexData); }
 
 }  // namespace glfixed::pipeline

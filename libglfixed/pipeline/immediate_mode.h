@@ -24,5 +24,7 @@ void flushVertices(Context& ctx);
 // glColor is about to make the colour per-vertex data (Context::vbo): Mesa
 // draws the buffered vertices with the old vertex format first.
 void colorBecomesVertexData(Context& ctx);
+// The same for the normal (glNormal): it grows the vbo's vertex format too.
+void normalBecomesVertexData(Context& ctx);
 
 }  // namespace glfixed::pipeline

@@ -54,6 +54,7 @@ class Context {
   struct VboFormat {
     bool verticesBuffered = false;
     bool colorIsVertexData = false;
+    bool normalIsVertexData = false;  // the same for glNormal
   } vbo;
   // The primitives of consecutive glBegin/glEnd pairs Mesa would draw as one
   // (pipeline/immediate_mode.h); drawn when a state change flushes them.

@@ -18,29 +18,12 @@ size_t wholePrimitives(GLenum mode, size_t n) {
   }
 }
 
-void truncate(VertexBatch& b, size_t n) {
-  b.position.resize(n);
-  b.normal.resize(n);
-  b.color.resize(n);
-  b.materialIndex.resize(n);
-}
-
-void append(VertexBatch& to, const VertexBatch& from) {
-  to.position.insert(to.position.end(), from.position.begin(), from.position.end());
-  to.normal.insert(to.normal.end(), from.normal.begin(), from.normal.end());
-  to.color.insert(to.color.end(), from.color.begin(), from.color.end());
-  to.materialIndex.insert(to.materialIndex.end(), from.materialIndex.begin(), from.materialIndex.end());
-}
-
 }  // namespace
 
 void drawPending(Context& ctx) {
   if (ctx.pending.size() == 0) return;
   drawBatch(ctx, ctx.pending);
-  ctx.pending.position.clear();
-  ctx.pending.normal.clear();
-  ctx.pending.color.clear();
-  ctx.pending.materialIndex.clear();
+  ctx.pending.clearVertices();
 }
 
 void endPrimitive(Context& ctx) {
@@ -48,14 +31,14 @@ void endPrimitive(Context& ctx) {
   if (b.size() == 0) return;
   ctx.vbo.verticesBuffered = true;
   b.mode = primitive::mesaConvertedMode(b.mode, static_cast<uint32_t>(b.size()));
-  truncate(b, wholePrimitives(b.mode, b.size()));
+  b.resizeVertices(wholePrimitives(b.mode, b.size()));
   // A batch with glMaterial inside is drawn at once: its per-vertex material
   // state (LightingAttrib::beginEndMaterialMask) belongs to it alone.
   const bool perVertexMaterial = b.materials.size() > 1;
   VertexBatch& p = ctx.pending;
   if (!perVertexMaterial && p.size() > 0 && p.materials.size() == 1 &&
       primitive::mesaMergesPrimitives(p.mode, static_cast<uint32_t>(p.size()), b.mode)) {
-    append(p, b);
+    p.appendVertices(b, 0, b.size());
     return;
   }
   drawPending(ctx);
@@ -88,15 +71,9 @@ void drawOpenPrimitivesSoFar(Context& ctx) {
   VertexBatch part;
   part.mode = b.mode;
   part.materials = b.materials;
-  part.position.assign(b.position.begin(), b.position.begin() + whole);
-  part.normal.assign(b.normal.begin(), b.normal.begin() + whole);
-  part.color.assign(b.color.begin(), b.color.begin() + whole);
-  part.materialIndex.assign(b.materialIndex.begin(), b.materialIndex.begin() + whole);
+  part.appendVertices(b, 0, whole);
   drawBatch(ctx, part);
-  b.position.erase(b.position.begin(), b.position.begin() + whole);
-  b.normal.erase(b.normal.begin(), b.normal.begin() + whole);
-  b.color.erase(b.color.begin(), b.color.begin() + whole);
-  b.materialIndex.erase(b.materialIndex.begin(), b.materialIndex.begin() + whole);
+  b.eraseFirstVertices(whole);
 }
 
 namespace {

@@ -28,11 +28,31 @@ struct VertexBatch {
   size_t size() const { return position.size(); }
   void reset(GLenum primitiveMode, const MaterialPair& current) {
     mode = primitiveMode;
-    position.clear();
-    normal.clear();
-    color.clear();
-    materialIndex.clear();
+    clearVertices();
     materials.assign(1, current);
+  }
+
+  // The per-vertex arrays, kept in step: the one place that lists them.
+  void clearVertices() { resizeVertices(0); }
+  void resizeVertices(size_t n) {
+    position.resize(n);
+    normal.resize(n);
+    color.resize(n);
+    materialIndex.resize(n);
+  }
+  // Appends vertices [first, last) of `from` (their material indexes as they are).
+  void appendVertices(const VertexBatch& from, size_t first, size_t last) {
+    position.insert(position.end(), from.position.begin() + first, from.position.begin() + last);
+    normal.insert(normal.end(), from.normal.begin() + first, from.normal.begin() + last);
+    color.insert(color.end(), from.color.begin() + first, from.color.begin() + last);
+    materialIndex.insert(materialIndex.end(), from.materialIndex.begin() + first,
+                         from.materialIndex.begin() + last);
+  }
+  void eraseFirstVertices(size_t n) {
+    position.erase(position.begin(), position.begin() + n);
+    normal.erase(normal.begin(), normal.begin() + n);
+    color.erase(color.begin(), color.begin() + n);
+    materialIndex.erase(materialIndex.begin(), materialIndex.begin() + n);
   }
 };
 

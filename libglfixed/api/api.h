@@ -1,6 +1,7 @@
 // Shared by the thin extern "C" entry points: the order every entry point
 // follows (DESIGN.md): find the context, refuse the call between glBegin and
-// glEnd where §2.6.3 forbids it, validate, store.
+// glEnd where §2.6.3 forbids it, validate, return if unchanged, flush, mark,
+// store.
 #pragma once
 
 #include <GL/gl.h>
@@ -25,12 +26,35 @@ inline Context* contextForQuery() {
   return ctx;
 }
 
-// The same for a command that changes state or draws: like Mesa it ends the
-// run of buffered glBegin/glEnd vertices first (Context::vbo).
-inline Context* contextOutsideBeginEnd() {
+// For a setter: the same check; the setter then validates its arguments and
+// calls setState (or beginStateChange), which flushes only if the value changes.
+inline Context* contextForSetter() { return contextForQuery(); }
+
+// For a command that draws, reads the framebuffer or always ends the run of
+// buffered glBegin/glEnd vertices in Mesa (matrix operations, glClear,
+// glReadPixels, glFlush): the same check, then the buffered vertices are drawn.
+inline Context* contextFlushed() {
   Context* ctx = contextForQuery();
   if (ctx) pipeline::flushVertices(*ctx);
   return ctx;
+}
+
+// The order of every setter (DESIGN.md; Mesa's main/*.c): after validation,
+// a value equal to the current one changes nothing and flushes nothing, so a
+// redundant call between glBegin/glEnd pairs keeps them one draw (scene
+// redundant_state_keeps_draw). Otherwise the buffered vertices are drawn with
+// the old state, the glPushAttrib group and the derived state's dirty bits are
+// marked, and the value is stored.
+inline void beginStateChange(Context& ctx, GLbitfield attribGroup, uint32_t dirty = 0) {
+  pipeline::flushVertices(ctx);
+  ctx.markChanged(attribGroup, dirty);
+}
+template <typename T>
+bool setState(Context& ctx, T& field, const T& value, GLbitfield attribGroup, uint32_t dirty = 0) {
+  if (field == value) return false;
+  beginStateChange(ctx, attribGroup, dirty);
+  field = value;
+  return true;
 }
 
 inline float clamp01(float v) { return v < 0 ? 0 : (v > 1 ? 1 : v); }

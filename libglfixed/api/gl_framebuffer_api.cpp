@@ -10,7 +10,7 @@ using namespace glfixed;
 extern "C" {
 
 GLAPI void APIENTRY glClear(GLbitfield mask) {
-  Context* ctx = api::contextOutsideBeginEnd();
+  Context* ctx = api::contextFlushed();
   if (!ctx) return;
   const GLbitfield known = GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT | GL_ACCUM_BUFFER_BIT;
   if (mask & ~known) {
@@ -26,7 +26,7 @@ GLAPI void APIENTRY glClear(GLbitfield mask) {
 
 GLAPI void APIENTRY glReadPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum format, GLenum type,
                                  GLvoid* pixels) {
-  Context* ctx = api::contextOutsideBeginEnd();
+  Context* ctx = api::contextFlushed();
   if (!ctx) return;
   if (width < 0 || height < 0) {
     ctx->recordError(GL_INVALID_VALUE);
@@ -36,8 +36,9 @@ GLAPI void APIENTRY glReadPixels(GLint x, GLint y, GLsizei width, GLsizei height
   if (error != GL_NO_ERROR) ctx->recordError(error);
 }
 
+// Client state: it never flushes the buffered vertices (nor does Mesa's).
 GLAPI void APIENTRY glPixelStorei(GLenum pname, GLint param) {
-  Context* ctx = api::contextOutsideBeginEnd();
+  Context* ctx = api::contextForSetter();
   if (!ctx) return;
   PixelStoreAttrib& p = ctx->pixelStore;
   GLint* target = nullptr;

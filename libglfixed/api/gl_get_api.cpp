@@ -60,7 +60,7 @@ bool queryState(Context& ctx, GLenum pname, StateValue& out) {
       return true;
     }
     case GL_COLOR_WRITEMASK: {
-      const bool* m = ctx.colorBuffer.writeMask;
+      const auto& m = ctx.colorBuffer.writeMask;
       out.set({double(m[0]), double(m[1]), double(m[2]), double(m[3])});
       return true;
     }
@@ -72,6 +72,14 @@ bool queryState(Context& ctx, GLenum pname, StateValue& out) {
     case GL_CULL_FACE_MODE: out.set({double(ctx.polygon.cullFaceMode)}); return true;
     case GL_FRONT_FACE: out.set({double(ctx.polygon.frontFace)}); return true;
     case GL_DITHER: out.set({double(ctx.colorBuffer.dither)}); return true;
+    case GL_PERSPECTIVE_CORRECTION_HINT: out.set({double(ctx.hint.perspectiveCorrection)}); return true;
+    case GL_POINT_SMOOTH_HINT: out.set({double(ctx.hint.pointSmooth)}); return true;
+    case GL_LINE_SMOOTH_HINT: out.set({double(ctx.hint.lineSmooth)}); return true;
+    case GL_POLYGON_SMOOTH_HINT: out.set({double(ctx.hint.polygonSmooth)}); return true;
+    case GL_FOG_HINT: out.set({double(ctx.hint.fog)}); return true;
+    case GL_GENERATE_MIPMAP_HINT: out.set({double(ctx.hint.generateMipmap)}); return true;
+    case GL_TEXTURE_COMPRESSION_HINT: out.set({double(ctx.hint.textureCompression)}); return true;
+    case GL_FRAGMENT_SHADER_DERIVATIVE_HINT: out.set({double(ctx.hint.fragmentShaderDerivative)}); return true;
     case GL_PROVOKING_VERTEX: out.set({double(ctx.lighting.provokingVertex)}); return true;
     case GL_QUADS_FOLLOW_PROVOKING_VERTEX_CONVENTION: out.set({0.0}); return true;
     case GL_CURRENT_COLOR: {

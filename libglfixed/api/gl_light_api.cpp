@@ -47,7 +47,7 @@ bool isColorPname(GLenum pname) { return pname == GL_AMBIENT || pname == GL_DIFF
 // ---- glLight ---------------------------------------------------------------
 
 void lightfv(GLenum light, GLenum pname, const GLfloat* params) {
-  Context* ctx = api::contextOutsideBeginEnd();
+  Context* ctx = api::contextForSetter();
   if (!ctx) return;
   const int i = lightIndex(light);
   if (i < 0) {
@@ -61,22 +61,19 @@ void lightfv(GLenum light, GLenum pname, const GLfloat* params) {
     case GL_SPECULAR: {
       const glm::vec4 v4(params[0], params[1], params[2], params[3]);
       glm::vec4& c = pname == GL_AMBIENT ? l.ambient : pname == GL_DIFFUSE ? l.diffuse : l.specular;
-      if (c == v4) return;
-      c = v4;
+      if (!api::setState(*ctx, c, v4, GL_LIGHTING_BIT, kDirtyLighting)) return;
       break;
     }
     case GL_POSITION: {  // stored in eye coordinates (§2.14.2)
       const glm::vec4 v4(params[0], params[1], params[2], params[3]);
       const glm::vec4 p = vertex::transformPointLikeMesa(ctx->modelview.top(), v4);
-      if (l.eyePosition == p) return;
-      l.eyePosition = p;
+      if (!api::setState(*ctx, l.eyePosition, p, GL_LIGHTING_BIT, kDirtyLighting)) return;
       break;
     }
     case GL_SPOT_DIRECTION: {  // by the upper 3x3 of the modelview
       const glm::vec3 d = vertex::transformDirectionLikeMesa(ctx->modelview.top(),
                                                              glm::vec3(params[0], params[1], params[2]));
-      if (l.eyeSpotDirection == d) return;
-      l.eyeSpotDirection = d;
+      if (!api::setState(*ctx, l.eyeSpotDirection, d, GL_LIGHTING_BIT, kDirtyLighting)) return;
       break;
     }
     case GL_SPOT_EXPONENT:
@@ -84,16 +81,14 @@ void lightfv(GLenum light, GLenum pname, const GLfloat* params) {
         ctx->recordError(GL_INVALID_VALUE);
         return;
       }
-      if (l.spotExponent == params[0]) return;
-      l.spotExponent = params[0];
+      if (!api::setState(*ctx, l.spotExponent, params[0], GL_LIGHTING_BIT, kDirtyLighting)) return;
       break;
     case GL_SPOT_CUTOFF:
       if ((params[0] < 0.0f || params[0] > 90.0f) && params[0] != 180.0f) {
         ctx->recordError(GL_INVALID_VALUE);
         return;
       }
-      if (l.spotCutoff == params[0]) return;
-      l.spotCutoff = params[0];
+      if (!api::setState(*ctx, l.spotCutoff, params[0], GL_LIGHTING_BIT, kDirtyLighting)) return;
       break;
     case GL_CONSTANT_ATTENUATION:
     case GL_LINEAR_ATTENUATION:
@@ -105,8 +100,7 @@ void lightfv(GLenum light, GLenum pname, const GLfloat* params) {
       float& k = pname == GL_CONSTANT_ATTENUATION ? l.constantAttenuation
                  : pname == GL_LINEAR_ATTENUATION ? l.linearAttenuation
                                                   : l.quadraticAttenuation;
-      if (k == params[0]) return;
-      k = params[0];
+      if (!api::setState(*ctx, k, params[0], GL_LIGHTING_BIT, kDirtyLighting)) return;
       break;
     }
     default: ctx->recordError(GL_INVALID_ENUM); return;
@@ -167,22 +161,20 @@ const Light* lightForQuery(Context* ctx, GLenum light, GLenum pname, GLfloat* va
 // ---- glLightModel ----------------------------------------------------------
 
 void lightModelfv(GLenum pname, const GLfloat* params) {
-  Context* ctx = api::contextOutsideBeginEnd();
+  Context* ctx = api::contextForSetter();
   if (!ctx) return;
   LightModel& m = ctx->lighting.model;
   switch (pname) {
     case GL_LIGHT_MODEL_AMBIENT: {
       const glm::vec4 a(params[0], params[1], params[2], params[3]);
-      if (m.ambient == a) return;
-      m.ambient = a;
+      if (!api::setState(*ctx, m.ambient, a, GL_LIGHTING_BIT, kDirtyLighting)) return;
       break;
     }
     case GL_LIGHT_MODEL_LOCAL_VIEWER:
     case GL_LIGHT_MODEL_TWO_SIDE: {
       bool& flag = pname == GL_LIGHT_MODEL_LOCAL_VIEWER ? m.localViewer : m.twoSide;
       const bool value = params[0] != 0.0f;
-      if (flag == value) return;
-      flag = value;
+      if (!api::setState(*ctx, flag, value, GL_LIGHTING_BIT, kDirtyLighting)) return;
       break;
     }
     case GL_LIGHT_MODEL_COLOR_CONTROL: {
@@ -195,8 +187,7 @@ void lightModelfv(GLenum pname, const GLfloat* params) {
         ctx->recordError(GL_INVALID_ENUM);
         return;
       }
-      if (m.colorControl == value) return;
-      m.colorControl = value;
+      if (!api::setState(*ctx, m.colorControl, value, GL_LIGHTING_BIT, kDirtyLighting)) return;
       break;
     }
     default: ctx->recordError(GL_INVALID_ENUM); return;
@@ -287,7 +278,7 @@ void materialfv(GLenum face, GLenum pname, const GLfloat* params) {
       }
     }
   }
-  if (changed) ctx->markDirty(kDirtyLighting);
+  if (changed) ctx->markChanged(GL_LIGHTING_BIT, kDirtyLighting);
   if (!ctx->insideBeginEnd) return;
   // Between glBegin and glEnd: the vertices from here on use the new material
   // (a new snapshot in the batch), and the components set are recorded, even
@@ -452,7 +443,7 @@ GLAPI void APIENTRY glGetMaterialiv(GLenum face, GLenum pname, GLint* params) {
 }
 
 GLAPI void APIENTRY glColorMaterial(GLenum face, GLenum mode) {
-  Context* ctx = api::contextOutsideBeginEnd();
+  Context* ctx = api::contextForSetter();
   if (!ctx) return;
   if (vertex::colorMaterialBits(face, mode) == 0) {
     ctx->recordError(GL_INVALID_ENUM);
@@ -460,6 +451,7 @@ GLAPI void APIENTRY glColorMaterial(GLenum face, GLenum mode) {
   }
   LightingAttrib& l = ctx->lighting;
   if (l.colorMaterialFace == face && l.colorMaterialParameter == mode) return;
+  api::beginStateChange(*ctx, GL_LIGHTING_BIT, kDirtyLighting);
   l.colorMaterialFace = face;
   l.colorMaterialParameter = mode;
   ctx->markDirty(kDirtyLighting);
@@ -467,15 +459,13 @@ GLAPI void APIENTRY glColorMaterial(GLenum face, GLenum mode) {
 }
 
 GLAPI void APIENTRY glShadeModel(GLenum mode) {
-  Context* ctx = api::contextOutsideBeginEnd();
+  Context* ctx = api::contextForSetter();
   if (!ctx) return;
   if (mode != GL_FLAT && mode != GL_SMOOTH) {
     ctx->recordError(GL_INVALID_ENUM);
     return;
   }
-  if (ctx->lighting.shadeModel == mode) return;
-  ctx->lighting.shadeModel = mode;
-  ctx->markDirty(kDirtyLighting);
+  api::setState(*ctx, ctx->lighting.shadeModel, mode, GL_LIGHTING_BIT, kDirtyLighting);
 }
 
 }  // extern "C"

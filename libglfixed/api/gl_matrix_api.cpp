@@ -70,7 +70,7 @@ glm::mat4 rotationMatrix(float angleDegrees, float x, float y, float z, bool* va
 }
 
 void rotate(float angleDegrees, float x, float y, float z) {
-  Context* ctx = api::contextOutsideBeginEnd();
+  Context* ctx = api::contextFlushed();
   if (!ctx) return;
   bool valid;
   glm::mat4 r = rotationMatrix(angleDegrees, x, y, z, &valid);
@@ -78,7 +78,7 @@ void rotate(float angleDegrees, float x, float y, float z) {
 }
 
 void translate(float x, float y, float z) {
-  Context* ctx = api::contextOutsideBeginEnd();
+  Context* ctx = api::contextFlushed();
   if (!ctx) return;
   glm::mat4 t(1.0f);
   t[3] = glm::vec4(x, y, z, 1.0f);
@@ -86,7 +86,7 @@ void translate(float x, float y, float z) {
 }
 
 void scale(float x, float y, float z) {
-  Context* ctx = api::contextOutsideBeginEnd();
+  Context* ctx = api::contextFlushed();
   if (!ctx) return;
   glm::mat4 s(1.0f);
   s[0][0] = x;
@@ -100,59 +100,59 @@ void scale(float x, float y, float z) {
 extern "C" {
 
 GLAPI void APIENTRY glMatrixMode(GLenum mode) {
-  Context* ctx = api::contextOutsideBeginEnd();
+  Context* ctx = api::contextForSetter();
   if (!ctx) return;
   if (mode != GL_MODELVIEW && mode != GL_PROJECTION) {
     // GL_TEXTURE and GL_COLOR need texturing and imaging, not implemented yet.
     ctx->recordError(GL_INVALID_ENUM);
     return;
   }
-  ctx->transform.matrixMode = mode;
+  api::setState(*ctx, ctx->transform.matrixMode, mode, GL_TRANSFORM_BIT);
 }
 
 GLAPI void APIENTRY glLoadIdentity(void) {
-  Context* ctx = api::contextOutsideBeginEnd();
+  Context* ctx = api::contextFlushed();
   if (ctx) loadCurrent(*ctx, glm::mat4(1.0f));
 }
 
 GLAPI void APIENTRY glLoadMatrixf(const GLfloat* m) {
-  Context* ctx = api::contextOutsideBeginEnd();
+  Context* ctx = api::contextFlushed();
   if (ctx && m) loadCurrent(*ctx, glm::make_mat4(m));
 }
 
 GLAPI void APIENTRY glLoadMatrixd(const GLdouble* m) {
-  Context* ctx = api::contextOutsideBeginEnd();
+  Context* ctx = api::contextFlushed();
   if (ctx && m) loadCurrent(*ctx, fromDoubles(m));
 }
 
 GLAPI void APIENTRY glMultMatrixf(const GLfloat* m) {
-  Context* ctx = api::contextOutsideBeginEnd();
+  Context* ctx = api::contextFlushed();
   if (ctx && m) multiplyCurrent(*ctx, glm::make_mat4(m));
 }
 
 GLAPI void APIENTRY glMultMatrixd(const GLdouble* m) {
-  Context* ctx = api::contextOutsideBeginEnd();
+  Context* ctx = api::contextFlushed();
   if (ctx && m) multiplyCurrent(*ctx, fromDoubles(m));
 }
 
 // GL 1.3: the same with row-major input (GL 2.1 §2.11.2).
 GLAPI void APIENTRY glLoadTransposeMatrixf(const GLfloat* m) {
-  Context* ctx = api::contextOutsideBeginEnd();
+  Context* ctx = api::contextFlushed();
   if (ctx && m) loadCurrent(*ctx, glm::transpose(glm::make_mat4(m)));
 }
 
 GLAPI void APIENTRY glLoadTransposeMatrixd(const GLdouble* m) {
-  Context* ctx = api::contextOutsideBeginEnd();
+  Context* ctx = api::contextFlushed();
   if (ctx && m) loadCurrent(*ctx, glm::transpose(fromDoubles(m)));
 }
 
 GLAPI void APIENTRY glMultTransposeMatrixf(const GLfloat* m) {
-  Context* ctx = api::contextOutsideBeginEnd();
+  Context* ctx = api::contextFlushed();
   if (ctx && m) multiplyCurrent(*ctx, glm::transpose(glm::make_mat4(m)));
 }
 
 GLAPI void APIENTRY glMultTransposeMatrixd(const GLdouble* m) {
-  Context* ctx = api::contextOutsideBeginEnd();
+  Context* ctx = api::contextFlushed();
   if (ctx && m) multiplyCurrent(*ctx, glm::transpose(fromDoubles(m)));
 }
 
@@ -193,7 +193,7 @@ GLAPI void APIENTRY glScaled(GLdouble x, GLdouble y, GLdouble z) {
 // arguments to float and builds the matrix in float; so do we.
 GLAPI void APIENTRY glFrustum(GLdouble left, GLdouble right, GLdouble bottom, GLdouble top, GLdouble zNear,
                               GLdouble zFar) {
-  Context* ctx = api::contextOutsideBeginEnd();
+  Context* ctx = api::contextFlushed();
   if (!ctx) return;
   if (zNear <= 0 || zFar <= 0 || left == right || bottom == top || zNear == zFar) {
     ctx->recordError(GL_INVALID_VALUE);
@@ -214,7 +214,7 @@ GLAPI void APIENTRY glFrustum(GLdouble left, GLdouble right, GLdouble bottom, GL
 
 GLAPI void APIENTRY glOrtho(GLdouble left, GLdouble right, GLdouble bottom, GLdouble top, GLdouble zNear,
                             GLdouble zFar) {
-  Context* ctx = api::contextOutsideBeginEnd();
+  Context* ctx = api::contextFlushed();
   if (!ctx) return;
   if (left == right || bottom == top || zNear == zFar) {
     ctx->recordError(GL_INVALID_VALUE);

@@ -12,6 +12,42 @@ bool isDepthFunc(GLenum f) { return f >= GL_NEVER && f <= GL_ALWAYS; }
 
 // The capabilities the core owns; lighting capabilities belong to the
 // lighting stage (vertex/lighting_queries.h). Null: not a core capability.
+// The glPushAttrib groups a capability belongs to besides GL_ENABLE_BIT.
+GLbitfield capabilityGroup(GLenum cap) {
+  switch (cap) {
+    case GL_DEPTH_TEST: return GL_ENABLE_BIT | GL_DEPTH_BUFFER_BIT;
+    case GL_CULL_FACE: return GL_ENABLE_BIT | GL_POLYGON_BIT;
+    case GL_DITHER: return GL_ENABLE_BIT | GL_COLOR_BUFFER_BIT;
+    default: return GL_ENABLE_BIT;
+  }
+}
+
+bool isLightingCapability(GLenum cap) {
+  switch (cap) {
+    case GL_LIGHTING: case GL_COLOR_MATERIAL: case GL_NORMALIZE: case GL_RESCALE_NORMAL:
+    case GL_LIGHT0: case GL_LIGHT1: case GL_LIGHT2: case GL_LIGHT3:
+    case GL_LIGHT4: case GL_LIGHT5: case GL_LIGHT6: case GL_LIGHT7:
+      return true;
+    default:
+      return false;
+  }
+}
+
+GLenum* hintState(Context& ctx, GLenum target) {
+  HintAttrib& h = ctx.hint;
+  switch (target) {
+    case GL_PERSPECTIVE_CORRECTION_HINT: return &h.perspectiveCorrection;
+    case GL_POINT_SMOOTH_HINT: return &h.pointSmooth;
+    case GL_LINE_SMOOTH_HINT: return &h.lineSmooth;
+    case GL_POLYGON_SMOOTH_HINT: return &h.polygonSmooth;
+    case GL_FOG_HINT: return &h.fog;
+    case GL_GENERATE_MIPMAP_HINT: return &h.generateMipmap;
+    case GL_TEXTURE_COMPRESSION_HINT: return &h.textureCompression;
+    case GL_FRAGMENT_SHADER_DERIVATIVE_HINT: return &h.fragmentShaderDerivative;
+    default: return nullptr;
+  }
+}
+
 bool* coreCapability(Context& ctx, GLenum cap) {
   switch (cap) {
     case GL_DEPTH_TEST: return &ctx.depth.test;
@@ -22,19 +58,21 @@ bool* coreCapability(Context& ctx, GLenum cap) {
 }
 
 void setCapability(GLenum cap, bool enabled) {
-  Context* ctx = api::contextForQuery();
+  Context* ctx = api::contextForSetter();
   if (!ctx) return;
   if (bool* flag = coreCapability(*ctx, cap)) {
-    if (*flag == enabled) return;  // no change: nothing is flushed
-    pipeline::flushVertices(*ctx);
-    *flag = enabled;
+    api::setState(*ctx, *flag, enabled, capabilityGroup(cap));
     return;
   }
   GLdouble current[16];
   int count = 0;
   if (getLightingState(*ctx, cap, current, &count) && count == 1 && (current[0] != 0) == enabled) return;
-  pipeline::flushVertices(*ctx);
-  if (!setLightingCapability(*ctx, cap, enabled)) ctx->recordError(GL_INVALID_ENUM);
+  if (!isLightingCapability(cap)) {
+    ctx->recordError(GL_INVALID_ENUM);
+    return;
+  }
+  api::beginStateChange(*ctx, GL_ENABLE_BIT | GL_LIGHTING_BIT | (cap == GL_NORMALIZE || cap == GL_RESCALE_NORMAL ? GL_TRANSFORM_BIT : 0));
+  setLightingCapability(*ctx, cap, enabled);
 }
 
 }  // namespace
@@ -50,129 +88,125 @@ GLAPI GLboolean APIENTRY glIsEnabled(GLenum cap) {
   if (bool* flag = coreCapability(*ctx, cap)) return *flag ? GL_TRUE : GL_FALSE;
   GLdouble v[16];
   int count = 0;
-  switch (cap) {  // the lighting capabilities, through the lighting stage's queries
-    case GL_LIGHTING: case GL_COLOR_MATERIAL: case GL_NORMALIZE: case GL_RESCALE_NORMAL:
-    case GL_LIGHT0: case GL_LIGHT1: case GL_LIGHT2: case GL_LIGHT3:
-    case GL_LIGHT4: case GL_LIGHT5: case GL_LIGHT6: case GL_LIGHT7:
-      if (getLightingState(*ctx, cap, v, &count) && count == 1) return v[0] != 0 ? GL_TRUE : GL_FALSE;
-      break;
-    default:
-      break;
-  }
+  // The lighting capabilities, through the lighting stage's queries.
+  if (isLightingCapability(cap) && getLightingState(*ctx, cap, v, &count) && count == 1)
+    return v[0] != 0 ? GL_TRUE : GL_FALSE;
   ctx->recordError(GL_INVALID_ENUM);
   return GL_FALSE;
 }
 
 GLAPI void APIENTRY glViewport(GLint x, GLint y, GLsizei width, GLsizei height) {
-  Context* ctx = api::contextOutsideBeginEnd();
+  Context* ctx = api::contextForSetter();
   if (!ctx) return;
   if (width < 0 || height < 0) {
     ctx->recordError(GL_INVALID_VALUE);
     return;
   }
-  // Sizes are clamped to GL_MAX_VIEWPORT_DIMS (GL 2.1 §2.11.1).
-  ctx->viewport.x = x;
-  ctx->viewport.y = y;
-  ctx->viewport.width = std::min(width, kMaxViewportSize);
-  ctx->viewport.height = std::min(height, kMaxViewportSize);
   ctx->viewportInitialized = true;
+  // Sizes are clamped to GL_MAX_VIEWPORT_DIMS (GL 2.1 §2.11.1).
+  ViewportAttrib v = ctx->viewport;
+  v.x = x;
+  v.y = y;
+  v.width = std::min(width, kMaxViewportSize);
+  v.height = std::min(height, kMaxViewportSize);
+  api::setState(*ctx, ctx->viewport, v, GL_VIEWPORT_BIT);
 }
 
 GLAPI void APIENTRY glDepthRange(GLclampd zNear, GLclampd zFar) {
-  Context* ctx = api::contextOutsideBeginEnd();
+  Context* ctx = api::contextForSetter();
   if (!ctx) return;
-  ctx->viewport.depthNear = api::clamp01(zNear);
-  ctx->viewport.depthFar = api::clamp01(zFar);
+  ViewportAttrib v = ctx->viewport;
+  v.depthNear = api::clamp01(zNear);
+  v.depthFar = api::clamp01(zFar);
+  api::setState(*ctx, ctx->viewport, v, GL_VIEWPORT_BIT);
 }
 
 GLAPI void APIENTRY glDepthFunc(GLenum func) {
-  Context* ctx = api::contextOutsideBeginEnd();
+  Context* ctx = api::contextForSetter();
   if (!ctx) return;
   if (!isDepthFunc(func)) {
     ctx->recordError(GL_INVALID_ENUM);
     return;
   }
-  ctx->depth.func = func;
+  api::setState(*ctx, ctx->depth.func, func, GL_DEPTH_BUFFER_BIT);
 }
 
 GLAPI void APIENTRY glDepthMask(GLboolean flag) {
-  Context* ctx = api::contextOutsideBeginEnd();
-  if (ctx) ctx->depth.writeMask = flag != GL_FALSE;
+  Context* ctx = api::contextForSetter();
+  if (ctx) api::setState(*ctx, ctx->depth.writeMask, flag != GL_FALSE, GL_DEPTH_BUFFER_BIT);
 }
 
 GLAPI void APIENTRY glColorMask(GLboolean r, GLboolean g, GLboolean b, GLboolean a) {
-  Context* ctx = api::contextOutsideBeginEnd();
+  Context* ctx = api::contextForSetter();
   if (!ctx) return;
-  bool* m = ctx->colorBuffer.writeMask;
-  m[0] = r != GL_FALSE;
-  m[1] = g != GL_FALSE;
-  m[2] = b != GL_FALSE;
-  m[3] = a != GL_FALSE;
+  const std::array<bool, 4> mask{r != GL_FALSE, g != GL_FALSE, b != GL_FALSE, a != GL_FALSE};
+  api::setState(*ctx, ctx->colorBuffer.writeMask, mask, GL_COLOR_BUFFER_BIT);
 }
 
 GLAPI void APIENTRY glClearColor(GLclampf r, GLclampf g, GLclampf b, GLclampf a) {
-  Context* ctx = api::contextOutsideBeginEnd();
+  Context* ctx = api::contextForSetter();
   if (!ctx) return;
-  ctx->colorBuffer.clearColor = glm::vec4(api::clamp01(r), api::clamp01(g), api::clamp01(b), api::clamp01(a));
+  const glm::vec4 c(api::clamp01(r), api::clamp01(g), api::clamp01(b), api::clamp01(a));
+  api::setState(*ctx, ctx->colorBuffer.clearColor, c, GL_COLOR_BUFFER_BIT);
 }
 
 GLAPI void APIENTRY glClearDepth(GLclampd depth) {
-  Context* ctx = api::contextOutsideBeginEnd();
-  if (ctx) ctx->depth.clearDepth = api::clamp01(depth);
+  Context* ctx = api::contextForSetter();
+  if (ctx) api::setState(*ctx, ctx->depth.clearDepth, api::clamp01(depth), GL_DEPTH_BUFFER_BIT);
 }
 
 GLAPI void APIENTRY glCullFace(GLenum mode) {
-  Context* ctx = api::contextOutsideBeginEnd();
+  Context* ctx = api::contextForSetter();
   if (!ctx) return;
   if (mode != GL_FRONT && mode != GL_BACK && mode != GL_FRONT_AND_BACK) {
     ctx->recordError(GL_INVALID_ENUM);
     return;
   }
-  ctx->polygon.cullFaceMode = mode;
+  api::setState(*ctx, ctx->polygon.cullFaceMode, mode, GL_POLYGON_BIT);
 }
 
 GLAPI void APIENTRY glFrontFace(GLenum mode) {
-  Context* ctx = api::contextOutsideBeginEnd();
+  Context* ctx = api::contextForSetter();
   if (!ctx) return;
   if (mode != GL_CW && mode != GL_CCW) {
     ctx->recordError(GL_INVALID_ENUM);
     return;
   }
-  ctx->polygon.frontFace = mode;
-  ctx->markDirty(kDirtyLighting);  // two-sided lighting picks faces by it
+  // Two-sided lighting picks faces by it: the lighting constants are rebuilt.
+  api::setState(*ctx, ctx->polygon.frontFace, mode, GL_POLYGON_BIT, kDirtyLighting);
 }
 
 // GL 3.2 / ARB_provoking_vertex: which vertex gives a flat-shaded primitive its colour.
 GLAPI void APIENTRY glProvokingVertex(GLenum mode) {
-  Context* ctx = api::contextOutsideBeginEnd();
+  Context* ctx = api::contextForSetter();
   if (!ctx) return;
   if (mode != GL_FIRST_VERTEX_CONVENTION && mode != GL_LAST_VERTEX_CONVENTION) {
     ctx->recordError(GL_INVALID_ENUM);
     return;
   }
-  ctx->lighting.provokingVertex = mode;
+  api::setState(*ctx, ctx->lighting.provokingVertex, mode, GL_LIGHTING_BIT);
 }
 GLAPI void APIENTRY glProvokingVertexEXT(GLenum mode) { glProvokingVertex(mode); }
 
 GLAPI void APIENTRY glHint(GLenum target, GLenum mode) {
-  Context* ctx = api::contextOutsideBeginEnd();
+  Context* ctx = api::contextForSetter();
   if (!ctx) return;
   if (mode != GL_FASTEST && mode != GL_NICEST && mode != GL_DONT_CARE) {
     ctx->recordError(GL_INVALID_ENUM);
     return;
   }
-  switch (target) {
-    case GL_PERSPECTIVE_CORRECTION_HINT: case GL_POINT_SMOOTH_HINT: case GL_LINE_SMOOTH_HINT:
-    case GL_POLYGON_SMOOTH_HINT: case GL_FOG_HINT: case GL_GENERATE_MIPMAP_HINT:
-    case GL_TEXTURE_COMPRESSION_HINT: case GL_FRAGMENT_SHADER_DERIVATIVE_HINT:
-      return;  // hints change nothing here: every triangle is perspective-correct
-    default:
-      ctx->recordError(GL_INVALID_ENUM);
+  GLenum* hint = hintState(*ctx, target);
+  if (!hint) {
+    ctx->recordError(GL_INVALID_ENUM);
+    return;
   }
+  // Hints change no pixel here (every triangle is perspective-correct), but
+  // they are state: queried, pushed with GL_HINT_BIT, and they flush as Mesa does.
+  api::setState(*ctx, *hint, mode, GL_HINT_BIT);
 }
 
 // Rendering is synchronous: every command has completed when it returns.
-GLAPI void APIENTRY glFlush(void) { api::contextOutsideBeginEnd(); }
-GLAPI void APIENTRY glFinish(void) { api::contextOutsideBeginEnd(); }
+GLAPI void APIENTRY glFlush(void) { api::contextFlushed(); }
+GLAPI void APIENTRY glFinish(void) { api::contextFlushed(); }
 
 }  // extern "C"

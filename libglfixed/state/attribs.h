@@ -4,6 +4,7 @@
 
 #include <GL/gl.h>
 
+#include <array>
 #include <glm/glm.hpp>
 
 namespace glfixed {
@@ -32,6 +33,10 @@ struct ViewportAttrib {
   GLint x = 0, y = 0;
   GLsizei width = 0, height = 0;
   GLclampd depthNear = 0, depthFar = 1;
+  bool operator==(const ViewportAttrib& o) const {
+    return x == o.x && y == o.y && width == o.width && height == o.height && depthNear == o.depthNear &&
+           depthFar == o.depthFar;
+  }
 };
 
 // GL_DEPTH_BUFFER_BIT.
@@ -46,7 +51,7 @@ struct DepthBufferAttrib {
 struct ColorBufferAttrib {
   glm::vec4 clearColor{0, 0, 0, 0};
   bool dither = true;
-  bool writeMask[4] = {true, true, true, true};
+  std::array<bool, 4> writeMask{true, true, true, true};
 };
 
 // GL_POLYGON_BIT.
@@ -54,6 +59,18 @@ struct PolygonAttrib {
   bool cullFace = false;
   GLenum cullFaceMode = GL_BACK;
   GLenum frontFace = GL_CCW;
+};
+
+// GL_HINT_BIT (GL 2.1 §5.6).
+struct HintAttrib {
+  GLenum perspectiveCorrection = GL_DONT_CARE;
+  GLenum pointSmooth = GL_DONT_CARE;
+  GLenum lineSmooth = GL_DONT_CARE;
+  GLenum polygonSmooth = GL_DONT_CARE;
+  GLenum fog = GL_DONT_CARE;
+  GLenum generateMipmap = GL_DONT_CARE;
+  GLenum textureCompression = GL_DONT_CARE;
+  GLenum fragmentShaderDerivative = GL_DONT_CARE;
 };
 
 }  // namespace glfixed

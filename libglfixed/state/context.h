@@ -32,6 +32,7 @@ class Context {
   DepthBufferAttrib depth;
   ColorBufferAttrib colorBuffer;
   PolygonAttrib polygon;
+  HintAttrib hint;
   PixelStoreAttrib pixelStore;
   LightingAttrib lighting;
   MatrixStack modelview{kMaxModelviewStackDepth};
@@ -72,6 +73,15 @@ class Context {
 
   MatrixStack& currentMatrixStack() { return transform.matrixMode == GL_PROJECTION ? projection : modelview; }
   void markDirty(uint32_t bits) { dirty_ |= bits; }
+  // A setter changed state of glPushAttrib group(s) `attribGroups` (GL_*_BIT)
+  // and derived state `dirty` must be rebuilt before the next draw.
+  void markChanged(GLbitfield attribGroups, uint32_t dirty) {
+    attribGroupsChanged |= attribGroups;
+    dirty_ |= dirty;
+  }
+  // The groups changed since the last glPushAttrib (Mesa's PopAttribState):
+  // glPopAttrib restores, and so flushes for, only these.
+  GLbitfield attribGroupsChanged = 0;
   // Rebuilds the derived state from the dirty bits; called before every draw.
   const vertex::VertexState& validate();
 

@@ -152,6 +152,23 @@ TEST_F(StateQueryTest, MatrixModeRoundTrip) {
   ExpectState({"modelview", GL_MATRIX_MODE, Kind::kInteger, 1, {GL_MODELVIEW}});
 }
 
+// §5.6: every hint starts GL_DONT_CARE and reads back what was set.
+TEST_F(StateQueryTest, HintsRoundTrip) {
+  const GLenum targets[] = {GL_PERSPECTIVE_CORRECTION_HINT, GL_POINT_SMOOTH_HINT, GL_LINE_SMOOTH_HINT,
+                            GL_POLYGON_SMOOTH_HINT, GL_FOG_HINT, GL_GENERATE_MIPMAP_HINT,
+                            GL_TEXTURE_COMPRESSION_HINT, GL_FRAGMENT_SHADER_DERIVATIVE_HINT};
+  for (GLenum t : targets) {
+    ExpectState({"default", t, Kind::kInteger, 1, {GL_DONT_CARE}});
+    glHint(t, GL_NICEST);
+    ExpectState({"nicest", t, Kind::kInteger, 1, {GL_NICEST}});
+    glHint(t, GL_FASTEST);
+    ExpectState({"fastest", t, Kind::kInteger, 1, {GL_FASTEST}});
+  }
+  glHint(GL_FOG_HINT, GL_FOG);  // not a hint mode
+  EXPECT_GL_ERROR(GL_INVALID_ENUM);
+  ExpectState({"unchanged", GL_FOG_HINT, Kind::kInteger, 1, {GL_FASTEST}});
+}
+
 TEST_F(StateQueryTest, ViewportRoundTrip) {
   glViewport(3, 5, 40, 20);
   ExpectState({"viewport", GL_VIEWPORT, Kind::kInteger, 4, {3, 5, 40, 20}});

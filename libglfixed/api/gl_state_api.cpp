@@ -1,5 +1,7 @@
 // Capabilities and the per-fragment, viewport and polygon state entry points
 // (GL 2.1 §2.11.1, §3.5.1, §4.1.6, §4.2.2, §5.1).
+#include <algorithm>
+
 #include "api/api.h"
 #include "vertex/color_material.h"
 #include "vertex/lighting_queries.h"
@@ -70,9 +72,10 @@ GLAPI void APIENTRY glViewport(GLint x, GLint y, GLsizei width, GLsizei height) 
     ctx->recordError(GL_INVALID_VALUE);
     return;
   }
-  // Sizes are clamped to GL_MAX_VIEWPORT_DIMS (GL 2.1 §2.11.1).
-  ctx->viewport.x = x;
-  ctx->viewport.y = y;
+  // Sizes are clamped to GL_MAX_VIEWPORT_DIMS (GL 2.1 §2.11.1); the origin to
+  // Mesa's GL_VIEWPORT_BOUNDS_RANGE, [-32768, 32767] (so x + width cannot overflow).
+  ctx->viewport.x = std::clamp(x, kViewportBoundsMin, kViewportBoundsMax);
+  ctx->viewport.y = std::clamp(y, kViewportBoundsMin, kViewportBoundsMax);
   ctx->viewport.width = std::min(width, kMaxViewportSize);
   ctx->viewport.height = std::min(height, kMaxViewportSize);
   ctx->viewportInitialized = true;

@@ -57,7 +57,9 @@ bool setState(Context& ctx, T& field, const T& value, GLbitfield attribGroup, ui
   return true;
 }
 
-inline float clamp01(float v) { return v < 0 ? 0 : (v > 1 ? 1 : v); }
-inline double clamp01(double v) { return v < 0 ? 0 : (v > 1 ? 1 : v); }
+// Mesa's CLAMP: NaN fails `v > 0` and becomes 0 (glClearDepth(NaN) clears to
+// 0, glDepthRange(NaN, 1) is (0, 1)), where a plain min/max would let it through.
+inline float clamp01(float v) { return v > 0 ? (v > 1 ? 1 : v) : 0; }
+inline double clamp01(double v) { return v > 0 ? (v > 1 ? 1 : v) : 0; }
 
 }  // namespace glfixed::api

@@ -1,11 +1,26 @@
 // Whole-framebuffer operations: glClear (GL 2.1 §4.2.3), glReadPixels (§4.3.2)
 // and glPixelStore (§3.6.1).
+#include <cmath>
+#include <cstdint>
 #include <cstring>
 
 #include "api/api.h"
 #include "framebuffer/read_pixels.h"
 
 using namespace glfixed;
+
+namespace {
+
+// Mesa's glPixelStoref rounds with lroundf (halves away from zero) and keeps
+// the low 32 bits of the long: NaN, infinities and anything past the long's
+// range give 0 (x86's "integer indefinite" is LONG_MIN, whose low half is 0);
+// 3e9 wraps to a negative value (GL_INVALID_VALUE), -3e9 to a positive one.
+GLint mesaRoundToInt(float f) {
+  if (!(std::fabs(f) < 9.2233720368547758e18f)) return 0;
+  return static_cast<GLint>(static_cast<uint32_t>(static_cast<uint64_t>(std::llround(f))));
+}
+
+}  // namespace
 
 extern "C" {
 
@@ -72,7 +87,7 @@ GLAPI void APIENTRY glPixelStorei(GLenum pname, GLint param) {
 }
 
 GLAPI void APIENTRY glPixelStoref(GLenum pname, GLfloat param) {
-  glPixelStorei(pname, static_cast<GLint>(param + (param >= 0 ? 0.5f : -0.5f)));
+  glPixelStorei(pname, mesaRoundToInt(param));
 }
 
 }  // extern "C"

@@ -1,5 +1,7 @@
 // Capabilities and the per-fragment, viewport and polygon state entry points
 // (GL 2.1 §2.11.1, §3.5.1, §4.1.6, §4.2.2, §5.1).
+#include <algorithm>
+
 #include "api/api.h"
 #include "vertex/color_material.h"
 #include "vertex/lighting_queries.h"
@@ -103,10 +105,11 @@ GLAPI void APIENTRY glViewport(GLint x, GLint y, GLsizei width, GLsizei height) 
     return;
   }
   ctx->viewportInitialized = true;
-  // Sizes are clamped to GL_MAX_VIEWPORT_DIMS (GL 2.1 §2.11.1).
+  // Sizes are clamped to GL_MAX_VIEWPORT_DIMS (GL 2.1 §2.11.1); the origin to
+  // Mesa's GL_VIEWPORT_BOUNDS_RANGE, [-32768, 32767] (so x + width cannot overflow).
   ViewportAttrib v = ctx->viewport;
-  v.x = x;
-  v.y = y;
+  v.x = std::clamp(x, kViewportBoundsMin, kViewportBoundsMax);
+  v.y = std::clamp(y, kViewportBoundsMin, kViewportBoundsMax);
   v.width = std::min(width, kMaxViewportSize);
   v.height = std::min(height, kMaxViewportSize);
   api::setState(*ctx, ctx->viewport, v, GL_VIEWPORT_BIT);

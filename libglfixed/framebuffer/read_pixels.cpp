@@ -120,13 +120,20 @@ GLenum readPixels(const Framebuffer& fb, const PixelStoreAttrib& pack, GLint x, 
   uint8_t* base = static_cast<uint8_t*>(pixels) + pack.packSkipRows * rowBytes +
                   static_cast<size_t>(pack.packSkipPixels) * pixelBytes;
 
-  for (int row = 0; row < height; ++row) {
+  // Only the rows and columns inside the framebuffer are read, the rest of
+  // `pixels` is left alone. In 64 bits: x + col can pass INT_MAX.
+  const auto inside = [](GLint origin, GLsizei count, int size, int& first, int& last) {
+    first = static_cast<int>(std::clamp<int64_t>(-int64_t{origin}, 0, count));
+    last = static_cast<int>(std::clamp<int64_t>(int64_t{size} - origin, first, count));
+  };
+  int row0, row1, col0, col1;
+  inside(y, height, fb.height(), row0, row1);
+  inside(x, width, fb.width(), col0, col1);
+  for (int row = row0; row < row1; ++row) {
     const int wy = y + row;
-    if (wy < 0 || wy >= fb.height()) continue;
     uint8_t* dstRow = base + row * rowBytes;
-    for (int col = 0; col < width; ++col) {
+    for (int col = col0; col < col1; ++col) {
       const int wx = x + col;
-      if (wx < 0 || wx >= fb.width()) continue;
       uint8_t* dst = dstRow + static_cast<size_t>(col) * pixelBytes;
       if (format == GL_DEPTH_COMPONENT) {
         const uint32_t d = fb.depth.get(wx, wy);

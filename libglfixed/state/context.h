@@ -19,6 +19,8 @@ namespace glfixed {
 constexpr int kMaxModelviewStackDepth = 32;
 constexpr int kMaxProjectionStackDepth = 32;
 constexpr int kMaxViewportSize = 16384;
+constexpr int kViewportBoundsMin = -2 * kMaxViewportSize;  // Mesa's GL_VIEWPORT_BOUNDS_RANGE
+constexpr int kViewportBoundsMax = 2 * kMaxViewportSize - 1;
 constexpr int kSubpixelBits = 8;
 
 class Context {

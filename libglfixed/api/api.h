@@ -59,6 +59,17 @@ bool setState(Context& ctx, T& field, const T& value, GLbitfield attribGroup, ui
 
 // Mesa's CLAMP: NaN fails `v > 0` and becomes 0 (glClearDepth(NaN) clears to
 // 0, glDepthRange(NaN, 1) is (0, 1)), where a plain min/max would let it through.
+// For state that no draw reads (the clear values, the matrix mode): Mesa
+// stores it without drawing the buffered vertices (scene
+// state_change_cuts_draw); the group is still marked for glPopAttrib.
+template <typename T>
+bool setStateWithoutFlush(Context& ctx, T& field, const T& value, GLbitfield attribGroup) {
+  if (field == value) return false;
+  ctx.markChanged(attribGroup, 0);
+  field = value;
+  return true;
+}
+
 inline float clamp01(float v) { return v > 0 ? (v > 1 ? 1 : v) : 0; }
 inline double clamp01(double v) { return v > 0 ? (v > 1 ? 1 : v) : 0; }
 

@@ -107,7 +107,7 @@ GLAPI void APIENTRY glMatrixMode(GLenum mode) {
     ctx->recordError(GL_INVALID_ENUM);
     return;
   }
-  api::setState(*ctx, ctx->transform.matrixMode, mode, GL_TRANSFORM_BIT);
+  api::setStateWithoutFlush(*ctx, ctx->transform.matrixMode, mode, GL_TRANSFORM_BIT);
 }
 
 GLAPI void APIENTRY glLoadIdentity(void) {

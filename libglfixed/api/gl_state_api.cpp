@@ -150,12 +150,12 @@ GLAPI void APIENTRY glClearColor(GLclampf r, GLclampf g, GLclampf b, GLclampf a)
   Context* ctx = api::contextForSetter();
   if (!ctx) return;
   const glm::vec4 c(api::clamp01(r), api::clamp01(g), api::clamp01(b), api::clamp01(a));
-  api::setState(*ctx, ctx->colorBuffer.clearColor, c, GL_COLOR_BUFFER_BIT);
+  api::setStateWithoutFlush(*ctx, ctx->colorBuffer.clearColor, c, GL_COLOR_BUFFER_BIT);
 }
 
 GLAPI void APIENTRY glClearDepth(GLclampd depth) {
   Context* ctx = api::contextForSetter();
-  if (ctx) api::setState(*ctx, ctx->depth.clearDepth, api::clamp01(depth), GL_DEPTH_BUFFER_BIT);
+  if (ctx) api::setStateWithoutFlush(*ctx, ctx->depth.clearDepth, api::clamp01(depth), GL_DEPTH_BUFFER_BIT);
 }
 
 GLAPI void APIENTRY glCullFace(GLenum mode) {

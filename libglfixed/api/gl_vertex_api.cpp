@@ -11,21 +11,25 @@ namespace {
 
 using api::normalized;
 
-void addVertex(float x, float y, float z, float w) {
+// `size`: the components the call gave (glVertex2, 3 or 4), which Mesa's
+// vertex format follows.
+void addVertex(int size, float x, float y, float z, float w) {
   Context* ctx = currentContext();
   if (!ctx) return;
   if (!ctx->insideBeginEnd) return;  // GL 2.1 §2.6.3: undefined outside Begin/End; ignored
+  pipeline::positionGrows(*ctx, size);
   VertexBatch& b = ctx->batch;
   b.position.emplace_back(x, y, z, w);
   b.normal.push_back(ctx->current.normal);
   b.color.push_back(ctx->current.color);
   b.materialIndex.push_back(static_cast<uint32_t>(b.materials.size() - 1));
+  pipeline::vertexAdded(*ctx);
 }
 
-void color(float r, float g, float b, float a) {
+void color(int size, float r, float g, float b, float a) {
   Context* ctx = currentContext();
   if (!ctx) return;
-  if (ctx->insideBeginEnd || ctx->vbo.verticesBuffered) pipeline::colorBecomesVertexData(*ctx);
+  if (ctx->insideBeginEnd || ctx->vbo.verticesBuffered) pipeline::colorBecomesVertexData(*ctx, size);
   ctx->current.color = glm::vec4(r, g, b, a);
   if (!ctx->insideBeginEnd && ctx->lighting.colorMaterial) {
     pipeline::drawPending(*ctx);  // the material changes: what is pending was lit with the old one
@@ -35,11 +39,11 @@ void color(float r, float g, float b, float a) {
 
 template <typename T>
 void color3(T r, T g, T b) {
-  color(normalized(r), normalized(g), normalized(b), 1.0f);
+  color(3, normalized(r), normalized(g), normalized(b), 1.0f);
 }
 template <typename T>
 void color4(T r, T g, T b, T a) {
-  color(normalized(r), normalized(g), normalized(b), normalized(a));
+  color(4, normalized(r), normalized(g), normalized(b), normalized(a));
 }
 
 void normal(float x, float y, float z) {
@@ -66,7 +70,7 @@ GLAPI void APIENTRY glBegin(GLenum mode) {
     return;
   }
   ctx->insideBeginEnd = true;
-  ctx->batch.reset(mode, ctx->lighting.material);
+  pipeline::beginPrimitive(*ctx, mode);
 }
 
 GLAPI void APIENTRY glEnd(void) {
@@ -82,30 +86,30 @@ GLAPI void APIENTRY glEnd(void) {
 }
 
 // glVertex: positions, as (x, y, 0, 1), (x, y, z, 1) or (x, y, z, w).
-GLAPI void APIENTRY glVertex2s(GLshort x, GLshort y) { addVertex(x, y, 0, 1); }
-GLAPI void APIENTRY glVertex2i(GLint x, GLint y) { addVertex(x, y, 0, 1); }
-GLAPI void APIENTRY glVertex2f(GLfloat x, GLfloat y) { addVertex(x, y, 0, 1); }
-GLAPI void APIENTRY glVertex2d(GLdouble x, GLdouble y) { addVertex(x, y, 0, 1); }
-GLAPI void APIENTRY glVertex3s(GLshort x, GLshort y, GLshort z) { addVertex(x, y, z, 1); }
-GLAPI void APIENTRY glVertex3i(GLint x, GLint y, GLint z) { addVertex(x, y, z, 1); }
-GLAPI void APIENTRY glVertex3f(GLfloat x, GLfloat y, GLfloat z) { addVertex(x, y, z, 1); }
-GLAPI void APIENTRY glVertex3d(GLdouble x, GLdouble y, GLdouble z) { addVertex(x, y, z, 1); }
-GLAPI void APIENTRY glVertex4s(GLshort x, GLshort y, GLshort z, GLshort w) { addVertex(x, y, z, w); }
-GLAPI void APIENTRY glVertex4i(GLint x, GLint y, GLint z, GLint w) { addVertex(x, y, z, w); }
-GLAPI void APIENTRY glVertex4f(GLfloat x, GLfloat y, GLfloat z, GLfloat w) { addVertex(x, y, z, w); }
-GLAPI void APIENTRY glVertex4d(GLdouble x, GLdouble y, GLdouble z, GLdouble w) { addVertex(x, y, z, w); }
-GLAPI void APIENTRY glVertex2sv(const GLshort* v) { if (v) addVertex(v[0], v[1], 0, 1); }
-GLAPI void APIENTRY glVertex2iv(const GLint* v) { if (v) addVertex(v[0], v[1], 0, 1); }
-GLAPI void APIENTRY glVertex2fv(const GLfloat* v) { if (v) addVertex(v[0], v[1], 0, 1); }
-GLAPI void APIENTRY glVertex2dv(const GLdouble* v) { if (v) addVertex(v[0], v[1], 0, 1); }
-GLAPI void APIENTRY glVertex3sv(const GLshort* v) { if (v) addVertex(v[0], v[1], v[2], 1); }
-GLAPI void APIENTRY glVertex3iv(const GLint* v) { if (v) addVertex(v[0], v[1], v[2], 1); }
-GLAPI void APIENTRY glVertex3fv(const GLfloat* v) { if (v) addVertex(v[0], v[1], v[2], 1); }
-GLAPI void APIENTRY glVertex3dv(const GLdouble* v) { if (v) addVertex(v[0], v[1], v[2], 1); }
-GLAPI void APIENTRY glVertex4sv(const GLshort* v) { if (v) addVertex(v[0], v[1], v[2], v[3]); }
-GLAPI void APIENTRY glVertex4iv(const GLint* v) { if (v) addVertex(v[0], v[1], v[2], v[3]); }
-GLAPI void APIENTRY glVertex4fv(const GLfloat* v) { if (v) addVertex(v[0], v[1], v[2], v[3]); }
-GLAPI void APIENTRY glVertex4dv(const GLdouble* v) { if (v) addVertex(v[0], v[1], v[2], v[3]); }
+GLAPI void APIENTRY glVertex2s(GLshort x, GLshort y) { addVertex(2, x, y, 0, 1); }
+GLAPI void APIENTRY glVertex2i(GLint x, GLint y) { addVertex(2, x, y, 0, 1); }
+GLAPI void APIENTRY glVertex2f(GLfloat x, GLfloat y) { addVertex(2, x, y, 0, 1); }
+GLAPI void APIENTRY glVertex2d(GLdouble x, GLdouble y) { addVertex(2, x, y, 0, 1); }
+GLAPI void APIENTRY glVertex3s(GLshort x, GLshort y, GLshort z) { addVertex(3, x, y, z, 1); }
+GLAPI void APIENTRY glVertex3i(GLint x, GLint y, GLint z) { addVertex(3, x, y, z, 1); }
+GLAPI void APIENTRY glVertex3f(GLfloat x, GLfloat y, GLfloat z) { addVertex(3, x, y, z, 1); }
+GLAPI void APIENTRY glVertex3d(GLdouble x, GLdouble y, GLdouble z) { addVertex(3, x, y, z, 1); }
+GLAPI void APIENTRY glVertex4s(GLshort x, GLshort y, GLshort z, GLshort w) { addVertex(4, x, y, z, w); }
+GLAPI void APIENTRY glVertex4i(GLint x, GLint y, GLint z, GLint w) { addVertex(4, x, y, z, w); }
+GLAPI void APIENTRY glVertex4f(GLfloat x, GLfloat y, GLfloat z, GLfloat w) { addVertex(4, x, y, z, w); }
+GLAPI void APIENTRY glVertex4d(GLdouble x, GLdouble y, GLdouble z, GLdouble w) { addVertex(4, x, y, z, w); }
+GLAPI void APIENTRY glVertex2sv(const GLshort* v) { if (v) addVertex(2, v[0], v[1], 0, 1); }
+GLAPI void APIENTRY glVertex2iv(const GLint* v) { if (v) addVertex(2, v[0], v[1], 0, 1); }
+GLAPI void APIENTRY glVertex2fv(const GLfloat* v) { if (v) addVertex(2, v[0], v[1], 0, 1); }
+GLAPI void APIENTRY glVertex2dv(const GLdouble* v) { if (v) addVertex(2, v[0], v[1], 0, 1); }
+GLAPI void APIENTRY glVertex3sv(const GLshort* v) { if (v) addVertex(3, v[0], v[1], v[2], 1); }
+GLAPI void APIENTRY glVertex3iv(const GLint* v) { if (v) addVertex(3, v[0], v[1], v[2], 1); }
+GLAPI void APIENTRY glVertex3fv(const GLfloat* v) { if (v) addVertex(3, v[0], v[1], v[2], 1); }
+GLAPI void APIENTRY glVertex3dv(const GLdouble* v) { if (v) addVertex(3, v[0], v[1], v[2], 1); }
+GLAPI void APIENTRY glVertex4sv(const GLshort* v) { if (v) addVertex(4, v[0], v[1], v[2], v[3]); }
+GLAPI void APIENTRY glVertex4iv(const GLint* v) { if (v) addVertex(4, v[0], v[1], v[2], v[3]); }
+GLAPI void APIENTRY glVertex4fv(const GLfloat* v) { if (v) addVertex(4, v[0], v[1], v[2], v[3]); }
+GLAPI void APIENTRY glVertex4dv(const GLdouble* v) { if (v) addVertex(4, v[0], v[1], v[2], v[3]); }
 
 // glColor: integer components are normalised (table 2.9); alpha 1 for glColor3.
 GLAPI void APIENTRY glColor3b(GLbyte r, GLbyte g, GLbyte b) { color3(r, g, b); }

@@ -47,7 +47,7 @@ void drawBatch(Context& ctx, const VertexBatch& batch) {
   static thread_local ShadedVertices shaded;  // reused: no allocation per batch
   vertex::shadeBatch(vs, batch, shaded);
   primitive::PrimitiveState ps = primitiveState(ctx, batch.mode, shaded.hasSecondary);
-  ps.constantPrimary = !vs.lighting && !ctx.vbo.colorIsVertexData;
+  ps.constantPrimary = !vs.lighting && !ctx.vbo.colorIsVertexData();
   primitive::drawPrimitives(ps, shaded, ctx.framebuffer);
 }
 

@@ -1,5 +1,7 @@
 #include "pipeline/immediate_mode.h"
 
+#include <algorithm>
+
 #include "pipeline/draw.h"
 #include "primitive/merge.h"
 #include "state/context.h"
@@ -18,6 +20,67 @@ size_t wholePrimitives(GLenum mode, size_t n) {
   }
 }
 
+// After the first vertices of a batch are gone, the material snapshots no
+// vertex uses any more are dropped too (a long glBegin/glEnd with glMaterial
+// calls stays bounded); a batch that had several keeps at least two, so that
+// it is still lit as one with per-vertex materials.
+void dropUnusedMaterials(VertexBatch& b) {
+  if (b.materials.size() <= 2 || b.size() == 0) return;
+  const uint32_t first = std::min<uint32_t>(b.materialIndex.front(), static_cast<uint32_t>(b.materials.size() - 2));
+  if (first == 0) return;
+  b.materials.erase(b.materials.begin(), b.materials.begin() + first);
+  for (uint32_t& i : b.materialIndex) i -= first;
+}
+
+// vbo_exec_wrap_buffers: Mesa draws everything buffered, the open
+// primitive's first vertices as a draw of their own (not merged with the
+// pending ones), and goes on with the vertices vbo_copy_vertices keeps
+// (vbo_store.h). So the two pieces decide separately whether they need
+// Mesa's draw pipeline (assemble.h).
+void wrapBuffers(Context& ctx) {
+  drawPending(ctx);
+  VboStore& store = ctx.vboStore;
+  VertexBatch& b = ctx.batch;
+  if (ctx.insideBeginEnd && b.size() > 0) {
+    const size_t count = b.size();
+    const WrapSplit split = wrapSplit(b.mode, static_cast<uint32_t>(count));
+    if (split.drawn > split.copied) {
+      VertexBatch part;
+      part.mode = b.mode;
+      part.materials = b.materials;
+      part.appendVertices(b, 0, split.drawn);
+      drawBatch(ctx, part);
+    }
+    if (split.keepFirst)
+      b.eraseVertices(1, count - 1);
+    else
+      b.eraseVertices(0, count - split.copied);
+    dropUnusedMaterials(b);
+  }
+  store.flushed(ctx.vbo.vertexFloats());
+  if (ctx.insideBeginEnd) {
+    store.vertexCount = static_cast<uint32_t>(b.size());
+    store.primCount = 1;  // the open primitive goes on
+  }
+}
+
+// An attribute becomes vertex data, or gets more components: the vertex
+// format grows (vbo_exec_wrap_upgrade_vertex), which wraps the buffer first.
+// Outside glBegin/glEnd, a new attribute after more than 8 vertices makes
+// Mesa reset the whole format after the draw (its heuristic to keep
+// attributes set between primitives out of the vertices), and the next
+// glBegin drops the attribute left alone there: nothing is vertex data.
+template <typename Grow>
+void growVertexFormat(Context& ctx, bool newAttribute, Grow grow) {
+  const bool reset = !ctx.insideBeginEnd && newAttribute && ctx.vboStore.vertexCount > 8;
+  wrapBuffers(ctx);
+  if (reset) {
+    ctx.vbo = Context::VboFormat();
+    return;
+  }
+  grow(ctx.vbo);
+}
+
 }  // namespace
 
 void drawPending(Context& ctx) {
@@ -26,67 +89,72 @@ void drawPending(Context& ctx) {
   ctx.pending.clearVertices();
 }
 
+void beginPrimitive(Context& ctx, GLenum mode) {
+  ctx.batch.reset(mode, ctx.lighting.material);
+  ++ctx.vboStore.primCount;
+}
+
 void endPrimitive(Context& ctx) {
   VertexBatch& b = ctx.batch;
-  if (b.size() == 0) return;
-  ctx.vbo.verticesBuffered = true;
-  b.mode = primitive::mesaConvertedMode(b.mode, static_cast<uint32_t>(b.size()));
-  b.resizeVertices(wholePrimitives(b.mode, b.size()));
-  // A batch with glMaterial inside is drawn at once: its per-vertex material
-  // state (LightingAttrib::beginEndMaterialMask) belongs to it alone.
-  const bool perVertexMaterial = b.materials.size() > 1;
-  VertexBatch& p = ctx.pending;
-  if (!perVertexMaterial && p.size() > 0 && p.materials.size() == 1 &&
-      primitive::mesaMergesPrimitives(p.mode, static_cast<uint32_t>(p.size()), b.mode)) {
-    p.appendVertices(b, 0, b.size());
-    return;
+  VboStore& store = ctx.vboStore;
+  const uint32_t count = static_cast<uint32_t>(b.size());
+  const GLenum mode = primitive::mesaConvertedMode(b.mode, count);
+  // vbo_merge_draws looks at the previous primitive's whole vertex count,
+  // an incomplete last primitive included.
+  const bool merged = store.primCount >= 2 && primitive::mesaMergesPrimitives(store.lastMode, store.lastCount, mode);
+  if (merged) {
+    --store.primCount;
+    store.lastCount += count;
+  } else {
+    store.lastMode = mode;
+    store.lastCount = count;
   }
-  drawPending(ctx);
-  if (perVertexMaterial) {
-    drawBatch(ctx, b);
-    return;
+  if (count > 0) {
+    ctx.vbo.verticesBuffered = true;
+    b.mode = mode;
+    b.resizeVertices(wholePrimitives(mode, count));
+    // A batch with glMaterial inside is drawn at once: its per-vertex material
+    // state (LightingAttrib::beginEndMaterialMask) belongs to it alone.
+    const bool perVertexMaterial = b.materials.size() > 1;
+    VertexBatch& p = ctx.pending;
+    if (merged && !perVertexMaterial && p.size() > 0 && p.materials.size() == 1 && p.mode == mode) {
+      p.appendVertices(b, 0, b.size());
+    } else {
+      drawPending(ctx);
+      if (perVertexMaterial)
+        drawBatch(ctx, b);
+      else
+        std::swap(p, b);  // b's vectors are reset at the next glBegin
+    }
   }
-  std::swap(p, b);  // b's vectors are reset at the next glBegin
+  if (store.primCount >= VboStore::kMaxPrimitives) {  // vbo_exec_vtx_flush, the format kept
+    drawPending(ctx);
+    store.flushed(ctx.vbo.vertexFloats());
+  }
+}
+
+void vertexAdded(Context& ctx) {
+  VboStore& store = ctx.vboStore;
+  if (++store.vertexCount >= store.maxVertices(ctx.vbo.vertexFloats())) wrapBuffers(ctx);
 }
 
 void flushVertices(Context& ctx) {
   drawPending(ctx);
+  ctx.vboStore.flushed(ctx.vbo.vertexFloats());
   ctx.vbo = Context::VboFormat();
 }
 
-// Mesa's vbo grows its vertex format when an attribute first becomes vertex
-// data between glBegin and glEnd (vbo_exec_wrap_upgrade_vertex): it draws the
-// buffered vertices at once, the open primitive's whole primitives as a draw
-// of their own (not merged with the pending ones), and keeps only the
-// vertices of its incomplete last primitive. So the primitives before the
-// glColor and those after it decide separately whether they need Mesa's draw
-// pipeline (assemble.h). Modelled for GL_TRIANGLES and GL_QUADS, whose kept
-// vertices are simply the incomplete last primitive.
-void drawOpenPrimitivesSoFar(Context& ctx) {
-  VertexBatch& b = ctx.batch;
-  if (b.mode != GL_TRIANGLES && b.mode != GL_QUADS) return;
-  if (b.materials.size() > 1) return;  // per-vertex material: drawn at glEnd
-  const size_t whole = wholePrimitives(b.mode, b.size());
-  if (whole == 0) return;
-  VertexBatch part;
-  part.mode = b.mode;
-  part.materials = b.materials;
-  part.appendVertices(b, 0, whole);
-  drawBatch(ctx, part);
-  b.eraseFirstVertices(whole);
+void colorBecomesVertexData(Context& ctx, int size) {
+  if (ctx.vbo.colorSize >= size) return;
+  growVertexFormat(ctx, ctx.vbo.colorSize == 0, [size](Context::VboFormat& f) { f.colorSize = size; });
 }
-
-namespace {
-// An attribute becomes vertex data: the vertex format grows (see above).
-void growVertexFormat(Context& ctx, bool& isVertexData) {
-  if (isVertexData) return;
-  drawPending(ctx);
-  if (ctx.insideBeginEnd) drawOpenPrimitivesSoFar(ctx);
-  isVertexData = true;
+void normalBecomesVertexData(Context& ctx) {
+  if (ctx.vbo.normalIsVertexData) return;
+  growVertexFormat(ctx, true, [](Context::VboFormat& f) { f.normalIsVertexData = true; });
 }
-}  // namespace
-
-void colorBecomesVertexData(Context& ctx) { growVertexFormat(ctx, ctx.vbo.colorIsVertexData); }
-void normalBecomesVertexData(Context& ctx) { growVertexFormat(ctx, ctx.vbo.normalIsVertexData); }
+void positionGrows(Context& ctx, int size) {
+  if (ctx.vbo.positionSize >= size) return;
+  growVertexFormat(ctx, ctx.vbo.positionSize == 0, [size](Context::VboFormat& f) { f.positionSize = size; });
+}
 
 }  // namespace glfixed::pipeline

@@ -48,11 +48,13 @@ struct VertexBatch {
     materialIndex.insert(materialIndex.end(), from.materialIndex.begin() + first,
                          from.materialIndex.begin() + last);
   }
-  void eraseFirstVertices(size_t n) {
-    position.erase(position.begin(), position.begin() + n);
-    normal.erase(normal.begin(), normal.begin() + n);
-    color.erase(color.begin(), color.begin() + n);
-    materialIndex.erase(materialIndex.begin(), materialIndex.begin() + n);
+  void eraseFirstVertices(size_t n) { eraseVertices(0, n); }
+  // Erases vertices [first, last) (their material indexes as they are).
+  void eraseVertices(size_t first, size_t last) {
+    position.erase(position.begin() + first, position.begin() + last);
+    normal.erase(normal.begin() + first, normal.begin() + last);
+    color.erase(color.begin() + first, color.begin() + last);
+    materialIndex.erase(materialIndex.begin() + first, materialIndex.begin() + last);
   }
 };
 

@@ -6,6 +6,7 @@
 #include <GL/gl.h>
 
 #include "framebuffer/framebuffer.h"
+#include "pipeline/vbo_store.h"
 #include "pipeline/vertex_batch.h"
 #include "state/attribs.h"
 #include "state/dirty.h"
@@ -56,9 +57,17 @@ class Context {
   // is never interpolated. Only which of the two rounds the pixels differs.
   struct VboFormat {
     bool verticesBuffered = false;
-    bool colorIsVertexData = false;
+    int positionSize = 0;  // the most components a glVertex gave since the reset: 2, 3, 4
+    int colorSize = 0;     // 0: a constant; 3 or 4: glColor3 or glColor4 made it vertex data
     bool normalIsVertexData = false;  // the same for glNormal
+    bool colorIsVertexData() const { return colorSize != 0; }
+    // Mesa's vertex_size (materials inside glBegin/glEnd not counted yet).
+    uint32_t vertexFloats() const {
+      return static_cast<uint32_t>(positionSize + colorSize + (normalIsVertexData ? 3 : 0));
+    }
   } vbo;
+  // Where Mesa's vertex buffer stands (pipeline/vbo_store.h); kept across flushes.
+  pipeline::VboStore vboStore;
   // The primitives of consecutive glBegin/glEnd pairs Mesa would draw as one
   // (pipeline/immediate_mode.h); drawn when a state change flushes them.
   VertexBatch pending;

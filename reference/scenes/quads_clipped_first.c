@@ -1,8 +1,8 @@
-/* FAILS today (kept out of CI): one glBegin(GL_QUADS) whose first quad is
- * clipped and whose second, concave quad is inside. Mesa splits the inside quad
- * as if it were drawn alone, (0,1,2)(0,2,3); libglfixed uses the split of a
- * clipped draw, (0,1,3)(1,2,3), which is right when the inside quad comes
- * first. The order rule of Mesa's draw module is still to be pinned down.
+/* One glBegin(GL_QUADS) whose first quad is clipped and whose second, concave
+ * quad is inside, its last vertex a glVertex4f after glVertex3f calls. The
+ * 4-component position grows Mesa's vertex format, which draws the first quad
+ * alone (clipped) and starts the second in a draw of its own, unclipped: so
+ * the inside quad splits (0,1,2)(0,2,3), as if drawn alone.
  * Minimised from fuzz_random_state seed 2. */
 #include "scene.h"
 

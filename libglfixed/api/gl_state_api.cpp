@@ -1,6 +1,7 @@
 // Capabilities and the per-fragment, viewport and polygon state entry points
 // (GL 2.1 §2.11.1, §3.5.1, §4.1.6, §4.2.2, §5.1).
 #include "api/api.h"
+#include "state/vertex_array_queries.h"
 #include "vertex/color_material.h"
 #include "vertex/lighting_queries.h"
 
@@ -48,6 +49,7 @@ GLAPI GLboolean APIENTRY glIsEnabled(GLenum cap) {
   Context* ctx = api::contextForQuery();
   if (!ctx) return GL_FALSE;
   if (bool* flag = coreCapability(*ctx, cap)) return *flag ? GL_TRUE : GL_FALSE;
+  if (const ClientArray* a = clientArrayOfCapability(ctx->vertexArray, cap)) return a->enabled ? GL_TRUE : GL_FALSE;
   GLdouble v[16];
   int count = 0;
   switch (cap) {  // the lighting capabilities, through the lighting stage's queries

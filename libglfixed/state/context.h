@@ -5,12 +5,16 @@
 
 #include <GL/gl.h>
 
+#include <vector>
+
 #include "framebuffer/framebuffer.h"
 #include "pipeline/vertex_batch.h"
 #include "state/attribs.h"
+#include "state/buffer_objects.h"
 #include "state/dirty.h"
 #include "state/lighting_attrib.h"
 #include "state/matrix_stack.h"
+#include "state/vertex_array_attrib.h"
 #include "vertex/light_constants.h"
 #include "vertex/vertex_stage.h"
 
@@ -20,6 +24,14 @@ constexpr int kMaxModelviewStackDepth = 32;
 constexpr int kMaxProjectionStackDepth = 32;
 constexpr int kMaxViewportSize = 16384;
 constexpr int kSubpixelBits = 8;
+constexpr int kMaxClientAttribStackDepth = 16;  // GL_MAX_CLIENT_ATTRIB_STACK_DEPTH, as Mesa
+
+// One entry of the glPushClientAttrib stack (GL 2.1 §6.1.14).
+struct ClientAttribEntry {
+  GLbitfield mask = 0;
+  PixelStoreAttrib pixelStore;
+  VertexArrayAttrib vertexArray;
+};
 
 class Context {
  public:
@@ -34,6 +46,9 @@ class Context {
   PolygonAttrib polygon;
   PixelStoreAttrib pixelStore;
   LightingAttrib lighting;
+  VertexArrayAttrib vertexArray;
+  BufferObjects buffers;
+  std::vector<ClientAttribEntry> clientAttribStack;
   MatrixStack modelview{kMaxModelviewStackDepth};
   MatrixStack projection{kMaxProjectionStackDepth};
 

@@ -3,6 +3,7 @@
 // Each validates, ends the run of buffered glBegin/glEnd vertices (Mesa
 // flushes them before an array draw), then hands the draw to
 // pipeline/array_draw.h.
+#include <algorithm>
 #include <cstring>
 #include <vector>
 
@@ -87,6 +88,83 @@ void drawElements(Context& ctx, GLenum mode, GLsizei count, GLenum type, const v
   pipeline::drawElements(ctx, src, mode, list);
 }
 
+// glArrayElement issues the glColor, glNormal and glVertex command of each
+// array's own type and size (GL 2.1 §2.8), so that integers convert as those
+// commands convert them (Mesa's immediate-mode conversions, not its vertex
+// fetch's). `bytes` null: past a buffer's end, zeros.
+template <typename T>
+void readComponents(const uint8_t* bytes, int size, T* out) {
+  for (int c = 0; c < 4; ++c) out[c] = T(0);
+  if (bytes) std::memcpy(out, bytes, sizeof(T) * static_cast<size_t>(std::min(size, 4)));
+}
+
+template <typename T, typename C3, typename C4>
+void colorAs(const uint8_t* bytes, int size, C3 color3, C4 color4) {
+  T v[4];
+  readComponents(bytes, size, v);
+  if (size == 3)
+    color3(v);
+  else
+    color4(v);
+}
+
+void arrayColor(const pipeline::ArrayView& a, uint32_t i) {
+  const uint8_t* p = a.elementBytes(i);
+  switch (a.type) {
+    case GL_BYTE: return colorAs<GLbyte>(p, a.size, glColor3bv, glColor4bv);
+    case GL_UNSIGNED_BYTE: return colorAs<GLubyte>(p, a.size, glColor3ubv, glColor4ubv);
+    case GL_SHORT: return colorAs<GLshort>(p, a.size, glColor3sv, glColor4sv);
+    case GL_UNSIGNED_SHORT: return colorAs<GLushort>(p, a.size, glColor3usv, glColor4usv);
+    case GL_INT: return colorAs<GLint>(p, a.size, glColor3iv, glColor4iv);
+    case GL_UNSIGNED_INT: return colorAs<GLuint>(p, a.size, glColor3uiv, glColor4uiv);
+    case GL_FLOAT: return colorAs<GLfloat>(p, a.size, glColor3fv, glColor4fv);
+    case GL_DOUBLE: return colorAs<GLdouble>(p, a.size, glColor3dv, glColor4dv);
+    default: return;
+  }
+}
+
+template <typename T, typename N>
+void normalAs(const uint8_t* bytes, N normal3) {
+  T v[4];
+  readComponents(bytes, 3, v);
+  normal3(v);
+}
+
+void arrayNormal(const pipeline::ArrayView& a, uint32_t i) {
+  const uint8_t* p = a.elementBytes(i);
+  switch (a.type) {
+    case GL_BYTE: return normalAs<GLbyte>(p, glNormal3bv);
+    case GL_SHORT: return normalAs<GLshort>(p, glNormal3sv);
+    case GL_INT: return normalAs<GLint>(p, glNormal3iv);
+    case GL_FLOAT: return normalAs<GLfloat>(p, glNormal3fv);
+    case GL_DOUBLE: return normalAs<GLdouble>(p, glNormal3dv);
+    default: return;
+  }
+}
+
+template <typename T, typename V2, typename V3, typename V4>
+void vertexAs(const uint8_t* bytes, int size, V2 v2, V3 v3, V4 v4) {
+  T v[4];
+  readComponents(bytes, size, v);
+  if (size == 2)
+    v2(v);
+  else if (size == 3)
+    v3(v);
+  else
+    v4(v);
+}
+
+void arrayVertex(const pipeline::ArrayView& a, uint32_t i) {
+  const uint8_t* p = a.elementBytes(i);
+  switch (a.type) {
+    case GL_SHORT: return vertexAs<GLshort>(p, a.size, glVertex2sv, glVertex3sv, glVertex4sv);
+    case GL_INT: return vertexAs<GLint>(p, a.size, glVertex2iv, glVertex3iv, glVertex4iv);
+    case GL_FLOAT: return vertexAs<GLfloat>(p, a.size, glVertex2fv, glVertex3fv, glVertex4fv);
+    case GL_DOUBLE: return vertexAs<GLdouble>(p, a.size, glVertex2dv, glVertex3dv, glVertex4dv);
+    default: return;
+  }
+}
+
 }  // namespace
 
 extern "C" {
@@ -99,18 +177,9 @@ GLAPI void APIENTRY glArrayElement(GLint i) {
   pipeline::ArraySources src;
   if (!resolve(*ctx, src)) return;
   const uint32_t e = static_cast<uint32_t>(i);
-  if (src.color) {
-    const glm::vec4 c = src.colorView.read(e, glm::vec4(0, 0, 0, 1));
-    glColor4f(c.r, c.g, c.b, c.a);
-  }
-  if (src.normal) {
-    const glm::vec4 n = src.normalView.read(e, glm::vec4(0));
-    glNormal3f(n.x, n.y, n.z);
-  }
-  if (src.vertex) {
-    const glm::vec4 v = src.vertexView.read(e, glm::vec4(0, 0, 0, 1));
-    glVertex4f(v.x, v.y, v.z, v.w);
-  }
+  if (src.color) arrayColor(src.colorView, e);
+  if (src.normal) arrayNormal(src.normalView, e);
+  if (src.vertex) arrayVertex(src.vertexView, e);  // last: it emits the vertex
 }
 
 GLAPI void APIENTRY glDrawArrays(GLenum mode, GLint first, GLsizei count) {

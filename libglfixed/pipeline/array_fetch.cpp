@@ -26,6 +26,12 @@ float convert(const uint8_t* p, bool normalized) {
       return std::max(f * static_cast<float>(1.0 / maxValue), -1.0f);
     } else {
       constexpr double maxValue = double((uint64_t(1) << (8 * sizeof(T))) - 1);
+      // gallivm's unorm to float for up to 16 bits (lp_build_unsigned_norm_to_float):
+      // c / 2^b, exact, times 2^b / (2^b - 1) rounded to float.
+      if constexpr (sizeof(T) <= 2) {
+        constexpr double range = double(uint64_t(1) << (8 * sizeof(T)));
+        return (f * static_cast<float>(1.0 / range)) * static_cast<float>(range / maxValue);
+      }
       return f * static_cast<float>(1.0 / maxValue);
     }
   }
@@ -88,16 +94,21 @@ void appendEach(const ArraySources& src, const Context& ctx, size_t count, Verte
 
 }  // namespace
 
+const uint8_t* ArrayView::elementBytes(uint32_t i) const {
+  const size_t at = static_cast<size_t>(i) * stride;
+  const size_t need = static_cast<size_t>(size) * componentBytes(type);
+  if (base == nullptr || (limit != SIZE_MAX && (at > limit || limit - at < need))) return nullptr;
+  return base + at;
+}
+
 glm::vec4 ArrayView::read(uint32_t i, glm::vec4 fill) const {
   const int bytes = componentBytes(type);
-  const size_t at = static_cast<size_t>(i) * stride;
-  const size_t need = static_cast<size_t>(size) * bytes;
+  const uint8_t* p = elementBytes(i);
   // Past the end of a buffer object (or a null pointer): zeros.
-  if (base == nullptr || (limit != SIZE_MAX && (at > limit || limit - at < need))) {
+  if (!p) {
     for (int c = 0; c < size && c < 4; ++c) fill[c] = 0;
     return fill;
   }
-  const uint8_t* p = base + at;
   for (int c = 0; c < size && c < 4; ++c) fill[c] = component(type, p + c * bytes, normalized);
   return fill;
 }

@@ -32,6 +32,8 @@ struct ArrayView {
   bool normalized = false;  // table 2.9: integer colours and normals
   // Element i; components the array lacks come from `fill`.
   glm::vec4 read(uint32_t i, glm::vec4 fill) const;
+  // Element i's bytes, or null where it would read past the buffer's end.
+  const uint8_t* elementBytes(uint32_t i) const;
 };
 
 // The arrays a draw reads. Secondary colour, fog coordinate, colour index,

@@ -13,7 +13,7 @@ using Submission = primitive::PrimitiveState::Submission;
 // How many of Mesa's draw segments (primitive/assemble.h) one chunk holds: a
 // chunk is fetched, shaded and drawn before the next is read, so a draw of
 // millions of vertices never holds more than this many at once.
-constexpr size_t kSegmentsPerChunk = 16;
+constexpr size_t kSegmentsPerChunk = 4;
 
 }  // namespace
 

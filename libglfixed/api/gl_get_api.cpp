@@ -5,6 +5,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "api/api.h"
+#include "state/vertex_array_queries.h"
 #include "vertex/lighting_queries.h"
 
 using namespace glfixed;
@@ -127,6 +128,11 @@ bool queryState(Context& ctx, GLenum pname, StateValue& out) {
       break;
   }
   int count = 0;
+  if (getVertexArrayState(ctx, pname, out.v, &count)) {
+    out.count = count;
+    out.kind = Kind::kPlain;
+    return true;
+  }
   if (getLightingState(ctx, pname, out.v, &count)) {
     out.count = count;
     out.kind = isNormalizedLightingQuery(pname) ? Kind::kNormalized : Kind::kPlain;

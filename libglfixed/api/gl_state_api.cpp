@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "api/api.h"
+#include "state/vertex_array_queries.h"
 #include "vertex/color_material.h"
 #include "vertex/lighting_queries.h"
 
@@ -88,6 +89,7 @@ GLAPI GLboolean APIENTRY glIsEnabled(GLenum cap) {
   Context* ctx = api::contextForQuery();
   if (!ctx) return GL_FALSE;
   if (bool* flag = coreCapability(*ctx, cap)) return *flag ? GL_TRUE : GL_FALSE;
+  if (const ClientArray* a = clientArrayOfCapability(ctx->vertexArray, cap)) return a->enabled ? GL_TRUE : GL_FALSE;
   GLdouble v[16];
   int count = 0;
   // The lighting capabilities, through the lighting stage's queries.

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "pipeline/vertex_batch.h"
+#include "primitive/primitive.h"
 
 namespace glfixed {
 class Context;
@@ -10,6 +11,11 @@ class Context;
 
 namespace glfixed::pipeline {
 
+// A glBegin/glEnd batch (the colour is vertex data as Context::vbo says).
 void drawBatch(Context& ctx, const VertexBatch& batch);
+// A batch of another submission: vertex arrays say themselves whether the
+// colour is vertex data (a colour array is enabled).
+void drawBatch(Context& ctx, const VertexBatch& batch, primitive::PrimitiveState::Submission submission,
+               bool colorIsVertexData);
 
 }  // namespace glfixed::pipeline

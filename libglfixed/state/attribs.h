@@ -81,6 +81,8 @@ namespace glfixed {
 struct PixelStoreAttrib {
   GLint packAlignment = 4, packRowLength = 0, packSkipPixels = 0, packSkipRows = 0;
   GLint unpackAlignment = 4, unpackRowLength = 0, unpackSkipPixels = 0, unpackSkipRows = 0;
+  // GL 2.1 puts the pixel buffer bindings (§4.3.5, table 6.34) in this group.
+  GLuint pixelPackBufferBinding = 0, pixelUnpackBufferBinding = 0;
 };
 
 }  // namespace glfixed

@@ -5,13 +5,17 @@
 
 #include <GL/gl.h>
 
+#include <vector>
+
 #include "framebuffer/framebuffer.h"
 #include "pipeline/vbo_store.h"
 #include "pipeline/vertex_batch.h"
 #include "state/attribs.h"
+#include "state/buffer_objects.h"
 #include "state/dirty.h"
 #include "state/lighting_attrib.h"
 #include "state/matrix_stack.h"
+#include "state/vertex_array_attrib.h"
 #include "vertex/light_constants.h"
 #include "vertex/vertex_stage.h"
 
@@ -23,6 +27,14 @@ constexpr int kMaxViewportSize = 16384;
 constexpr int kViewportBoundsMin = -2 * kMaxViewportSize;  // Mesa's GL_VIEWPORT_BOUNDS_RANGE
 constexpr int kViewportBoundsMax = 2 * kMaxViewportSize - 1;
 constexpr int kSubpixelBits = 8;
+constexpr int kMaxClientAttribStackDepth = 16;  // GL_MAX_CLIENT_ATTRIB_STACK_DEPTH, as Mesa
+
+// One entry of the glPushClientAttrib stack (GL 2.1 §6.1.14).
+struct ClientAttribEntry {
+  GLbitfield mask = 0;
+  PixelStoreAttrib pixelStore;
+  VertexArrayAttrib vertexArray;
+};
 
 class Context {
  public:
@@ -38,6 +50,9 @@ class Context {
   HintAttrib hint;
   PixelStoreAttrib pixelStore;
   LightingAttrib lighting;
+  VertexArrayAttrib vertexArray;
+  BufferObjects buffers;
+  std::vector<ClientAttribEntry> clientAttribStack;
   MatrixStack modelview{kMaxModelviewStackDepth};
   MatrixStack projection{kMaxProjectionStackDepth};
 

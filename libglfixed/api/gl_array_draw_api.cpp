@@ -1,0 +1,238 @@
+// Drawing from vertex arrays (GL 2.1 §2.8): glArrayElement, glDrawArrays,
+// glDrawElements, glDrawRangeElements, glMultiDrawArrays, glMultiDrawElements.
+// Each validates, ends the run of buffered glBegin/glEnd vertices (Mesa
+// flushes them before an array draw), then hands the draw to
+// pipeline/array_draw.h.
+#include <algorithm>
+#include <cstring>
+#include <vector>
+
+#include "api/api.h"
+#include "pipeline/array_draw.h"
+
+using namespace glfixed;
+
+namespace {
+
+bool isPrimitiveMode(GLenum mode) { return mode <= GL_POLYGON; }
+bool isIndexType(GLenum type) {
+  return type == GL_UNSIGNED_BYTE || type == GL_UNSIGNED_SHORT || type == GL_UNSIGNED_INT;
+}
+
+// The context of an array draw, after the checks every draw shares: null
+// (with the error recorded) if it must not draw.
+Context* drawContext(GLenum mode, GLsizei count) {
+  Context* ctx = api::contextForQuery();
+  if (!ctx) return nullptr;
+  if (!isPrimitiveMode(mode)) {
+    ctx->recordError(GL_INVALID_ENUM);
+    return nullptr;
+  }
+  if (count < 0) {
+    ctx->recordError(GL_INVALID_VALUE);
+    return nullptr;
+  }
+  return ctx;
+}
+
+// Resolves the arrays; GL_INVALID_OPERATION if one sources a mapped buffer.
+bool resolve(Context& ctx, pipeline::ArraySources& src) {
+  const GLenum error = pipeline::resolveArrays(ctx, src);
+  if (error != GL_NO_ERROR) ctx.recordError(error);
+  return error == GL_NO_ERROR;
+}
+
+// Reads `count` indices of `type` from client memory or, with an element
+// array buffer bound, from that buffer at offset `indices`. Indices past the
+// buffer's end are not read (the draw ends there). False: the buffer is mapped.
+bool readIndices(Context& ctx, GLsizei count, GLenum type, const void* indices, std::vector<uint32_t>& out) {
+  out.clear();
+  const size_t bytes = type == GL_UNSIGNED_BYTE ? 1 : (type == GL_UNSIGNED_SHORT ? 2 : 4);
+  const uint8_t* p = static_cast<const uint8_t*>(indices);
+  size_t n = static_cast<size_t>(count);
+  if (const GLuint name = ctx.vertexArray.elementArrayBufferBinding) {
+    const BufferObject* b = ctx.buffers.find(name);
+    if (b && b->mapped) {
+      ctx.recordError(GL_INVALID_OPERATION);
+      return false;
+    }
+    const size_t offset = reinterpret_cast<uintptr_t>(indices);
+    const size_t size = b ? b->data.size() : 0;
+    const size_t available = offset >= size ? 0 : (size - offset) / bytes;
+    n = std::min(n, available);
+    p = n > 0 ? b->data.data() + offset : nullptr;
+  } else if (!p) {
+    return true;  // no indices: nothing to draw
+  }
+  out.resize(n);
+  for (size_t i = 0; i < n; ++i) {
+    if (bytes == 1) {
+      out[i] = p[i];
+    } else if (bytes == 2) {
+      uint16_t v;
+      std::memcpy(&v, p + 2 * i, 2);
+      out[i] = v;
+    } else {
+      std::memcpy(&out[i], p + 4 * i, 4);
+    }
+  }
+  return true;
+}
+
+void drawElements(Context& ctx, GLenum mode, GLsizei count, GLenum type, const void* indices) {
+  pipeline::ArraySources src;
+  if (!resolve(ctx, src)) return;
+  static thread_local std::vector<uint32_t> list;
+  if (!readIndices(ctx, count, type, indices, list)) return;
+  pipeline::flushVertices(ctx);
+  pipeline::drawElements(ctx, src, mode, list);
+}
+
+// glArrayElement issues the glColor, glNormal and glVertex command of each
+// array's own type and size (GL 2.1 §2.8), so that integers convert as those
+// commands convert them (Mesa's immediate-mode conversions, not its vertex
+// fetch's). `bytes` null: past a buffer's end, zeros.
+template <typename T>
+void readComponents(const uint8_t* bytes, int size, T* out) {
+  for (int c = 0; c < 4; ++c) out[c] = T(0);
+  if (bytes) std::memcpy(out, bytes, sizeof(T) * static_cast<size_t>(std::min(size, 4)));
+}
+
+template <typename T, typename C3, typename C4>
+void colorAs(const uint8_t* bytes, int size, C3 color3, C4 color4) {
+  T v[4];
+  readComponents(bytes, size, v);
+  if (size == 3)
+    color3(v);
+  else
+    color4(v);
+}
+
+void arrayColor(const pipeline::ArrayView& a, uint32_t i) {
+  const uint8_t* p = a.elementBytes(i);
+  switch (a.type) {
+    case GL_BYTE: return colorAs<GLbyte>(p, a.size, glColor3bv, glColor4bv);
+    case GL_UNSIGNED_BYTE: return colorAs<GLubyte>(p, a.size, glColor3ubv, glColor4ubv);
+    case GL_SHORT: return colorAs<GLshort>(p, a.size, glColor3sv, glColor4sv);
+    case GL_UNSIGNED_SHORT: return colorAs<GLushort>(p, a.size, glColor3usv, glColor4usv);
+    case GL_INT: return colorAs<GLint>(p, a.size, glColor3iv, glColor4iv);
+    case GL_UNSIGNED_INT: return colorAs<GLuint>(p, a.size, glColor3uiv, glColor4uiv);
+    case GL_FLOAT: return colorAs<GLfloat>(p, a.size, glColor3fv, glColor4fv);
+    case GL_DOUBLE: return colorAs<GLdouble>(p, a.size, glColor3dv, glColor4dv);
+    default: return;
+  }
+}
+
+template <typename T, typename N>
+void normalAs(const uint8_t* bytes, N normal3) {
+  T v[4];
+  readComponents(bytes, 3, v);
+  normal3(v);
+}
+
+void arrayNormal(const pipeline::ArrayView& a, uint32_t i) {
+  const uint8_t* p = a.elementBytes(i);
+  switch (a.type) {
+    case GL_BYTE: return normalAs<GLbyte>(p, glNormal3bv);
+    case GL_SHORT: return normalAs<GLshort>(p, glNormal3sv);
+    case GL_INT: return normalAs<GLint>(p, glNormal3iv);
+    case GL_FLOAT: return normalAs<GLfloat>(p, glNormal3fv);
+    case GL_DOUBLE: return normalAs<GLdouble>(p, glNormal3dv);
+    default: return;
+  }
+}
+
+template <typename T, typename V2, typename V3, typename V4>
+void vertexAs(const uint8_t* bytes, int size, V2 v2, V3 v3, V4 v4) {
+  T v[4];
+  readComponents(bytes, size, v);
+  if (size == 2)
+    v2(v);
+  else if (size == 3)
+    v3(v);
+  else
+    v4(v);
+}
+
+void arrayVertex(const pipeline::ArrayView& a, uint32_t i) {
+  const uint8_t* p = a.elementBytes(i);
+  switch (a.type) {
+    case GL_SHORT: return vertexAs<GLshort>(p, a.size, glVertex2sv, glVertex3sv, glVertex4sv);
+    case GL_INT: return vertexAs<GLint>(p, a.size, glVertex2iv, glVertex3iv, glVertex4iv);
+    case GL_FLOAT: return vertexAs<GLfloat>(p, a.size, glVertex2fv, glVertex3fv, glVertex4fv);
+    case GL_DOUBLE: return vertexAs<GLdouble>(p, a.size, glVertex2dv, glVertex3dv, glVertex4dv);
+    default: return;
+  }
+}
+
+}  // namespace
+
+extern "C" {
+
+// Inside glBegin/glEnd, element i is the glColor, glNormal and glVertex calls
+// it stands for (GL 2.1 §2.8), through the immediate-mode path.
+GLAPI void APIENTRY glArrayElement(GLint i) {
+  Context* ctx = api::context();
+  if (!ctx || i < 0) return;
+  pipeline::ArraySources src;
+  if (!resolve(*ctx, src)) return;
+  const uint32_t e = static_cast<uint32_t>(i);
+  if (src.color) arrayColor(src.colorView, e);
+  if (src.normal) arrayNormal(src.normalView, e);
+  if (src.vertex) arrayVertex(src.vertexView, e);  // last: it emits the vertex
+}
+
+GLAPI void APIENTRY glDrawArrays(GLenum mode, GLint first, GLsizei count) {
+  Context* ctx = drawContext(mode, count);
+  if (!ctx) return;
+  if (first < 0) return ctx->recordError(GL_INVALID_VALUE);
+  pipeline::ArraySources src;
+  if (!resolve(*ctx, src)) return;
+  pipeline::flushVertices(*ctx);
+  pipeline::drawArrays(*ctx, src, mode, static_cast<uint32_t>(first), static_cast<uint32_t>(count));
+}
+
+GLAPI void APIENTRY glDrawElements(GLenum mode, GLsizei count, GLenum type, const void* indices) {
+  Context* ctx = drawContext(mode, count);
+  if (!ctx) return;
+  if (!isIndexType(type)) return ctx->recordError(GL_INVALID_ENUM);
+  drawElements(*ctx, mode, count, type, indices);
+}
+
+// The range is a promise about the indices (GL 2.1 §2.8); drawn as glDrawElements.
+GLAPI void APIENTRY glDrawRangeElements(GLenum mode, GLuint start, GLuint end, GLsizei count, GLenum type,
+                                        const void* indices) {
+  Context* ctx = drawContext(mode, count);
+  if (!ctx) return;
+  if (end < start) return ctx->recordError(GL_INVALID_VALUE);
+  if (!isIndexType(type)) return ctx->recordError(GL_INVALID_ENUM);
+  drawElements(*ctx, mode, count, type, indices);
+}
+
+// Each draw of a multi-draw is a draw of its own (Mesa hands them to the
+// draw module one by one).
+GLAPI void APIENTRY glMultiDrawArrays(GLenum mode, const GLint* first, const GLsizei* count,
+                                      GLsizei drawcount) {
+  Context* ctx = drawContext(mode, drawcount);
+  if (!ctx || drawcount == 0 || !first || !count) return;
+  for (GLsizei i = 0; i < drawcount; ++i)
+    if (count[i] < 0 || first[i] < 0) return ctx->recordError(GL_INVALID_VALUE);
+  pipeline::ArraySources src;
+  if (!resolve(*ctx, src)) return;
+  pipeline::flushVertices(*ctx);
+  for (GLsizei i = 0; i < drawcount; ++i)
+    pipeline::drawArrays(*ctx, src, mode, static_cast<uint32_t>(first[i]), static_cast<uint32_t>(count[i]));
+}
+
+GLAPI void APIENTRY glMultiDrawElements(GLenum mode, const GLsizei* count, GLenum type,
+                                        const void* const* indices, GLsizei drawcount) {
+  Context* ctx = drawContext(mode, drawcount);
+  if (!ctx) return;
+  if (!isIndexType(type)) return ctx->recordError(GL_INVALID_ENUM);
+  if (drawcount == 0 || !count || !indices) return;
+  for (GLsizei i = 0; i < drawcount; ++i)
+    if (count[i] < 0) return ctx->recordError(GL_INVALID_VALUE);
+  for (GLsizei i = 0; i < drawcount; ++i) drawElements(*ctx, mode, count[i], type, indices[i]);
+}
+
+}  // extern "C"

@@ -5,6 +5,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "api/api.h"
+#include "state/capabilities.h"
 #include "vertex/lighting_queries.h"
 
 using namespace glfixed;
@@ -123,8 +124,15 @@ bool queryState(Context& ctx, GLenum pname, StateValue& out) {
     case GL_UNPACK_ROW_LENGTH: out.set({double(ctx.pixelStore.unpackRowLength)}); return true;
     case GL_UNPACK_SKIP_PIXELS: out.set({double(ctx.pixelStore.unpackSkipPixels)}); return true;
     case GL_UNPACK_SKIP_ROWS: out.set({double(ctx.pixelStore.unpackSkipRows)}); return true;
+    case GL_ATTRIB_STACK_DEPTH: out.set({double(ctx.attribStack.depth())}); return true;
+    case GL_MAX_ATTRIB_STACK_DEPTH: out.set({double(kMaxAttribStackDepth)}); return true;
     default:
       break;
+  }
+  // Every capability's flag is a boolean query of the same name (§6.1.1).
+  if (const Capability* c = findCapability(pname); c) {
+    out.set({double(c->flag(ctx))});
+    return true;
   }
   int count = 0;
   if (getLightingState(ctx, pname, out.v, &count)) {

@@ -7,6 +7,8 @@
 
 #include "framebuffer/framebuffer.h"
 #include "pipeline/vertex_batch.h"
+#include "state/attrib_groups.h"
+#include "state/attrib_stack.h"
 #include "state/attribs.h"
 #include "state/dirty.h"
 #include "state/lighting_attrib.h"
@@ -35,6 +37,18 @@ class Context {
   HintAttrib hint;
   PixelStoreAttrib pixelStore;
   LightingAttrib lighting;
+  // The groups whose stages come later (state/attrib_groups.h).
+  FogAttrib fog;
+  StencilAttrib stencil;
+  ScissorAttrib scissor;
+  LineAttrib line;
+  PointAttrib point;
+  PolygonStippleAttrib polygonStipple;
+  PixelModeAttrib pixelMode;
+  AccumAttrib accum;
+  MultisampleAttrib multisample;
+  TextureAttrib texture;
+  AttribStack attribStack;  // glPushAttrib/glPopAttrib
   MatrixStack modelview{kMaxModelviewStackDepth};
   MatrixStack projection{kMaxProjectionStackDepth};
 

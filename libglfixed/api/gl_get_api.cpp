@@ -6,6 +6,7 @@
 
 #include "api/api.h"
 #include "state/vertex_array_queries.h"
+#include "state/capabilities.h"
 #include "vertex/lighting_queries.h"
 
 using namespace glfixed;
@@ -124,8 +125,15 @@ bool queryState(Context& ctx, GLenum pname, StateValue& out) {
     case GL_UNPACK_ROW_LENGTH: out.set({double(ctx.pixelStore.unpackRowLength)}); return true;
     case GL_UNPACK_SKIP_PIXELS: out.set({double(ctx.pixelStore.unpackSkipPixels)}); return true;
     case GL_UNPACK_SKIP_ROWS: out.set({double(ctx.pixelStore.unpackSkipRows)}); return true;
+    case GL_ATTRIB_STACK_DEPTH: out.set({double(ctx.attribStack.depth())}); return true;
+    case GL_MAX_ATTRIB_STACK_DEPTH: out.set({double(kMaxAttribStackDepth)}); return true;
     default:
       break;
+  }
+  // Every capability's flag is a boolean query of the same name (§6.1.1).
+  if (const Capability* c = findCapability(pname); c) {
+    out.set({double(c->flag(ctx))});
+    return true;
   }
   int count = 0;
   if (getVertexArrayState(ctx, pname, out.v, &count)) {

@@ -5,36 +5,13 @@
 #include "api/api.h"
 #include "state/vertex_array_queries.h"
 #include "vertex/color_material.h"
-#include "vertex/lighting_queries.h"
+#include "state/capabilities.h"
 
 using namespace glfixed;
 
 namespace {
 
 bool isDepthFunc(GLenum f) { return f >= GL_NEVER && f <= GL_ALWAYS; }
-
-// The capabilities the core owns; lighting capabilities belong to the
-// lighting stage (vertex/lighting_queries.h). Null: not a core capability.
-// The glPushAttrib groups a capability belongs to besides GL_ENABLE_BIT.
-GLbitfield capabilityGroup(GLenum cap) {
-  switch (cap) {
-    case GL_DEPTH_TEST: return GL_ENABLE_BIT | GL_DEPTH_BUFFER_BIT;
-    case GL_CULL_FACE: return GL_ENABLE_BIT | GL_POLYGON_BIT;
-    case GL_DITHER: return GL_ENABLE_BIT | GL_COLOR_BUFFER_BIT;
-    default: return GL_ENABLE_BIT;
-  }
-}
-
-bool isLightingCapability(GLenum cap) {
-  switch (cap) {
-    case GL_LIGHTING: case GL_COLOR_MATERIAL: case GL_NORMALIZE: case GL_RESCALE_NORMAL:
-    case GL_LIGHT0: case GL_LIGHT1: case GL_LIGHT2: case GL_LIGHT3:
-    case GL_LIGHT4: case GL_LIGHT5: case GL_LIGHT6: case GL_LIGHT7:
-      return true;
-    default:
-      return false;
-  }
-}
 
 GLenum* hintState(Context& ctx, GLenum target) {
   HintAttrib& h = ctx.hint;
@@ -51,31 +28,22 @@ GLenum* hintState(Context& ctx, GLenum target) {
   }
 }
 
-bool* coreCapability(Context& ctx, GLenum cap) {
-  switch (cap) {
-    case GL_DEPTH_TEST: return &ctx.depth.test;
-    case GL_CULL_FACE: return &ctx.polygon.cullFace;
-    case GL_DITHER: return &ctx.colorBuffer.dither;
-    default: return nullptr;
-  }
-}
-
+// glEnable/glDisable through the capability table (state/capabilities.h):
+// only a change flushes, as in Mesa (scene redundant_state_keeps_draw).
 void setCapability(GLenum cap, bool enabled) {
   Context* ctx = api::contextForSetter();
   if (!ctx) return;
-  if (bool* flag = coreCapability(*ctx, cap)) {
-    api::setState(*ctx, *flag, enabled, capabilityGroup(cap));
-    return;
-  }
-  GLdouble current[16];
-  int count = 0;
-  if (getLightingState(*ctx, cap, current, &count) && count == 1 && (current[0] != 0) == enabled) return;
-  if (!isLightingCapability(cap)) {
+  const Capability* c = findCapability(cap);
+  if (!c || !c->settable) {
     ctx->recordError(GL_INVALID_ENUM);
     return;
   }
-  api::beginStateChange(*ctx, GL_ENABLE_BIT | GL_LIGHTING_BIT | (cap == GL_NORMALIZE || cap == GL_RESCALE_NORMAL ? GL_TRANSFORM_BIT : 0));
-  setLightingCapability(*ctx, cap, enabled);
+  bool& flag = c->flag(*ctx);
+  if (flag == enabled) return;
+  pipeline::flushVertices(*ctx);
+  storeCapability(*ctx, *c, enabled);
+  // Enabling GL_COLOR_MATERIAL makes the material take the current colour at once.
+  if (cap == GL_COLOR_MATERIAL && enabled) trackColorMaterial(*ctx);
 }
 
 }  // namespace
@@ -88,13 +56,10 @@ GLAPI void APIENTRY glDisable(GLenum cap) { setCapability(cap, false); }
 GLAPI GLboolean APIENTRY glIsEnabled(GLenum cap) {
   Context* ctx = api::contextForQuery();
   if (!ctx) return GL_FALSE;
-  if (bool* flag = coreCapability(*ctx, cap)) return *flag ? GL_TRUE : GL_FALSE;
+  const Capability* c = findCapability(cap);
+  if (c) return c->flag(*ctx) ? GL_TRUE : GL_FALSE;
+  // The client-state arrays (glEnableClientState) answer glIsEnabled too (§6.1.1).
   if (const ClientArray* a = clientArrayOfCapability(ctx->vertexArray, cap)) return a->enabled ? GL_TRUE : GL_FALSE;
-  GLdouble v[16];
-  int count = 0;
-  // The lighting capabilities, through the lighting stage's queries.
-  if (isLightingCapability(cap) && getLightingState(*ctx, cap, v, &count) && count == 1)
-    return v[0] != 0 ? GL_TRUE : GL_FALSE;
   ctx->recordError(GL_INVALID_ENUM);
   return GL_FALSE;
 }

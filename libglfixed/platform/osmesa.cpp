@@ -154,6 +154,8 @@ GLAPI GLboolean APIENTRY OSMesaMakeCurrent(OSMesaContext ctx, void* buffer, GLen
   if (!ctx->context.viewportInitialized) {
     ctx->context.viewport.width = width;
     ctx->context.viewport.height = height;
+    ctx->context.scissor.width = width;  // the scissor box likewise (§4.1.2)
+    ctx->context.scissor.height = height;
     ctx->context.viewportInitialized = true;
   }
   tCurrent = ctx;

@@ -26,6 +26,9 @@ struct TransformAttrib {
   GLenum matrixMode = GL_MODELVIEW;
   bool normalize = false;
   bool rescaleNormal = false;
+  // Client clip planes (§2.12): held in eye space; no clipping against them yet.
+  std::array<glm::vec4, 6> clipPlane{};
+  std::array<bool, 6> clipPlaneEnabled{};
 };
 
 // GL_VIEWPORT_BIT.
@@ -52,6 +55,20 @@ struct ColorBufferAttrib {
   glm::vec4 clearColor{0, 0, 0, 0};
   bool dither = true;
   std::array<bool, 4> writeMask{true, true, true, true};
+  // Held, not used yet (table 6.18-6.19): the per-fragment stages that read
+  // them come later.
+  bool alphaTest = false;
+  GLenum alphaFunc = GL_ALWAYS;
+  float alphaRef = 0;
+  bool blend = false;
+  GLenum blendSrcRGB = GL_ONE, blendSrcAlpha = GL_ONE, blendDstRGB = GL_ZERO, blendDstAlpha = GL_ZERO;
+  GLenum blendEquationRGB = GL_FUNC_ADD, blendEquationAlpha = GL_FUNC_ADD;
+  glm::vec4 blendColor{0, 0, 0, 0};
+  bool colorLogicOp = false, indexLogicOp = false;
+  GLenum logicOpMode = GL_COPY;
+  GLenum drawBuffer = GL_FRONT;  // single-buffered OSMesa
+  float clearIndex = 0;
+  GLuint indexWriteMask = ~0u;
 };
 
 // GL_POLYGON_BIT.
@@ -59,6 +76,11 @@ struct PolygonAttrib {
   bool cullFace = false;
   GLenum cullFaceMode = GL_BACK;
   GLenum frontFace = GL_CCW;
+  // Held, not used yet (table 6.17): polygon modes, offset, smoothing, stipple.
+  GLenum frontMode = GL_FILL, backMode = GL_FILL;
+  float offsetFactor = 0, offsetUnits = 0;
+  bool smooth = false, stipple = false;
+  bool offsetPoint = false, offsetLine = false, offsetFill = false;
 };
 
 // GL_HINT_BIT (GL 2.1 §5.6).

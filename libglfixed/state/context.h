@@ -10,6 +10,8 @@
 #include "framebuffer/framebuffer.h"
 #include "pipeline/vbo_store.h"
 #include "pipeline/vertex_batch.h"
+#include "state/attrib_groups.h"
+#include "state/attrib_stack.h"
 #include "state/attribs.h"
 #include "state/buffer_objects.h"
 #include "state/dirty.h"
@@ -53,6 +55,18 @@ class Context {
   VertexArrayAttrib vertexArray;
   BufferObjects buffers;
   std::vector<ClientAttribEntry> clientAttribStack;
+  // The groups whose stages come later (state/attrib_groups.h).
+  FogAttrib fog;
+  StencilAttrib stencil;
+  ScissorAttrib scissor;
+  LineAttrib line;
+  PointAttrib point;
+  PolygonStippleAttrib polygonStipple;
+  PixelModeAttrib pixelMode;
+  AccumAttrib accum;
+  MultisampleAttrib multisample;
+  TextureAttrib texture;
+  AttribStack attribStack;  // glPushAttrib/glPopAttrib
   MatrixStack modelview{kMaxModelviewStackDepth};
   MatrixStack projection{kMaxProjectionStackDepth};
 

@@ -3,7 +3,6 @@
 #include "vertex/lighting_queries.h"
 
 #include "state/context.h"
-#include "vertex/color_material.h"
 
 namespace glfixed {
 
@@ -44,28 +43,6 @@ bool getLightingState(Context& ctx, GLenum pname, GLdouble* out, int* count) {
     case GL_RESCALE_NORMAL: put(out, count, {double(ctx.transform.rescaleNormal)}); return true;
     default: return false;
   }
-}
-
-bool setLightingCapability(Context& ctx, GLenum cap, bool enabled) {
-  LightingAttrib& l = ctx.lighting;
-  bool* flag = nullptr;
-  if (int i = lightIndex(cap); i >= 0) {
-    flag = &l.light[i].enabled;
-  } else {
-    switch (cap) {
-      case GL_LIGHTING: flag = &l.lighting; break;
-      case GL_COLOR_MATERIAL: flag = &l.colorMaterial; break;
-      case GL_NORMALIZE: flag = &ctx.transform.normalize; break;
-      case GL_RESCALE_NORMAL: flag = &ctx.transform.rescaleNormal; break;
-      default: return false;
-    }
-  }
-  if (*flag == enabled) return true;
-  *flag = enabled;
-  ctx.markDirty(kDirtyLighting);
-  // Enabling GL_COLOR_MATERIAL makes the material take the current colour at once.
-  if (cap == GL_COLOR_MATERIAL && enabled) trackColorMaterial(ctx);
-  return true;
 }
 
 }  // namespace glfixed

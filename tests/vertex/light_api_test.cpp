@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdint>
 
+#include "state/capabilities.h"
 #include "state/context.h"
 #include "vertex/light_constants.h"
 #include "vertex/lighting_queries.h"
@@ -181,8 +182,10 @@ TEST_F(LightApiTest, QueriesOwnExactlyTheLightingPnames) {
   EXPECT_EQ(count, 4);
   EXPECT_FALSE(getLightingState(ctx_, GL_DEPTH_TEST, v, &count));
   EXPECT_FALSE(getLightingState(ctx_, GL_LIGHT0 + 8, v, &count));
-  EXPECT_FALSE(setLightingCapability(ctx_, GL_DEPTH_TEST, true));
-  EXPECT_FALSE(setLightingCapability(ctx_, GL_LIGHT0 + 8, true));
+  // The capabilities are one table (state/capabilities.h): GL_LIGHT8 is none.
+  EXPECT_EQ(findCapability(GL_LIGHT0 + 8), nullptr);
+  ASSERT_NE(findCapability(GL_LIGHT7), nullptr);
+  EXPECT_EQ(&findCapability(GL_LIGHT7)->flag(ctx_), &ctx_.lighting.light[7].enabled);
 }
 
 // ---- setting and converting ------------------------------------------------------

@@ -1,0 +1,23 @@
+// The server attribute stack (GL 2.1 §6.1.14): glPushAttrib, glPopAttrib.
+// Plain functions of their arguments, so that a display list can call them.
+#include "api/api.h"
+
+using namespace glfixed;
+
+extern "C" {
+
+// Not a flush: Mesa only copies the state (scene attrib_pop_ends_draw).
+GLAPI void APIENTRY glPushAttrib(GLbitfield mask) {
+  Context* ctx = api::contextForSetter();
+  if (ctx && !ctx->attribStack.push(*ctx, mask)) ctx->recordError(GL_STACK_OVERFLOW);
+}
+
+// Mesa draws the buffered vertices first whatever the pop restores, even
+// when nothing changed since the push, and even on underflow (scene
+// attrib_pop_ends_draw).
+GLAPI void APIENTRY glPopAttrib(void) {
+  Context* ctx = api::contextFlushed();
+  if (ctx && !ctx->attribStack.pop(*ctx)) ctx->recordError(GL_STACK_UNDERFLOW);
+}
+
+}  // extern "C"

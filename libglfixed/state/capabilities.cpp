@@ -1,0 +1,142 @@
+#include "state/capabilities.h"
+
+#include "state/context.h"
+
+namespace glfixed {
+
+namespace {
+
+// Where a flag lives: member Flag of Context member Group.
+template <auto Group, auto Flag>
+bool& field(Context& c) {
+  return (c.*Group).*Flag;
+}
+template <int I>
+bool& light(Context& c) {
+  return c.lighting.light[I].enabled;
+}
+template <int I>
+bool& clipPlane(Context& c) {
+  return c.transform.clipPlaneEnabled[I];
+}
+template <auto Flag>
+bool& textureUnit(Context& c) {
+  return c.texture.activeEnables().*Flag;
+}
+
+constexpr bool kSettable = true, kHeld = false;
+
+// One row per GL 2.1 capability except the evaluator maps and GL_AUTO_NORMAL
+// (GL_EVAL_BIT, added with the evaluators).
+constexpr Capability entry(GLenum cap, bool& (*flag)(Context&), GLbitfield groups, uint32_t dirty,
+                           bool settable, bool perUnit = false) {
+  return Capability{cap, flag, groups, dirty, settable, perUnit};
+}
+
+const std::array<Capability, kCapabilityCount> kCapabilities = {{
+    entry(GL_DEPTH_TEST, field<&Context::depth, &DepthBufferAttrib::test>, GL_DEPTH_BUFFER_BIT, 0, kSettable),
+    entry(GL_CULL_FACE, field<&Context::polygon, &PolygonAttrib::cullFace>, GL_POLYGON_BIT, 0, kSettable),
+    entry(GL_DITHER, field<&Context::colorBuffer, &ColorBufferAttrib::dither>, GL_COLOR_BUFFER_BIT, 0,
+          kSettable),
+    entry(GL_LIGHTING, field<&Context::lighting, &LightingAttrib::lighting>, GL_LIGHTING_BIT, kDirtyLighting,
+          kSettable),
+    entry(GL_LIGHT0, light<0>, GL_LIGHTING_BIT, kDirtyLighting, kSettable),
+    entry(GL_LIGHT1, light<1>, GL_LIGHTING_BIT, kDirtyLighting, kSettable),
+    entry(GL_LIGHT2, light<2>, GL_LIGHTING_BIT, kDirtyLighting, kSettable),
+    entry(GL_LIGHT3, light<3>, GL_LIGHTING_BIT, kDirtyLighting, kSettable),
+    entry(GL_LIGHT4, light<4>, GL_LIGHTING_BIT, kDirtyLighting, kSettable),
+    entry(GL_LIGHT5, light<5>, GL_LIGHTING_BIT, kDirtyLighting, kSettable),
+    entry(GL_LIGHT6, light<6>, GL_LIGHTING_BIT, kDirtyLighting, kSettable),
+    entry(GL_LIGHT7, light<7>, GL_LIGHTING_BIT, kDirtyLighting, kSettable),
+    entry(GL_COLOR_MATERIAL, field<&Context::lighting, &LightingAttrib::colorMaterial>, GL_LIGHTING_BIT,
+          kDirtyLighting, kSettable),
+    // The lighting constants hold whether normals are normalized or rescaled.
+    entry(GL_NORMALIZE, field<&Context::transform, &TransformAttrib::normalize>, GL_TRANSFORM_BIT,
+          kDirtyLighting, kSettable),
+    entry(GL_RESCALE_NORMAL, field<&Context::transform, &TransformAttrib::rescaleNormal>, GL_TRANSFORM_BIT,
+          kDirtyLighting, kSettable),
+    // State without its stage yet.
+    entry(GL_ALPHA_TEST, field<&Context::colorBuffer, &ColorBufferAttrib::alphaTest>, GL_COLOR_BUFFER_BIT, 0,
+          kHeld),
+    entry(GL_BLEND, field<&Context::colorBuffer, &ColorBufferAttrib::blend>, GL_COLOR_BUFFER_BIT, 0, kHeld),
+    entry(GL_COLOR_LOGIC_OP, field<&Context::colorBuffer, &ColorBufferAttrib::colorLogicOp>,
+          GL_COLOR_BUFFER_BIT, 0, kHeld),
+    entry(GL_INDEX_LOGIC_OP, field<&Context::colorBuffer, &ColorBufferAttrib::indexLogicOp>,
+          GL_COLOR_BUFFER_BIT, 0, kHeld),
+    entry(GL_CLIP_PLANE0, clipPlane<0>, GL_TRANSFORM_BIT, 0, kHeld),
+    entry(GL_CLIP_PLANE1, clipPlane<1>, GL_TRANSFORM_BIT, 0, kHeld),
+    entry(GL_CLIP_PLANE2, clipPlane<2>, GL_TRANSFORM_BIT, 0, kHeld),
+    entry(GL_CLIP_PLANE3, clipPlane<3>, GL_TRANSFORM_BIT, 0, kHeld),
+    entry(GL_CLIP_PLANE4, clipPlane<4>, GL_TRANSFORM_BIT, 0, kHeld),
+    entry(GL_CLIP_PLANE5, clipPlane<5>, GL_TRANSFORM_BIT, 0, kHeld),
+    entry(GL_FOG, field<&Context::fog, &FogAttrib::enabled>, GL_FOG_BIT, 0, kHeld),
+    entry(GL_COLOR_SUM, field<&Context::fog, &FogAttrib::colorSum>, GL_FOG_BIT, 0, kHeld),
+    entry(GL_LINE_SMOOTH, field<&Context::line, &LineAttrib::smooth>, GL_LINE_BIT, 0, kHeld),
+    entry(GL_LINE_STIPPLE, field<&Context::line, &LineAttrib::stipple>, GL_LINE_BIT, 0, kHeld),
+    entry(GL_POINT_SMOOTH, field<&Context::point, &PointAttrib::smooth>, GL_POINT_BIT, 0, kHeld),
+    entry(GL_POINT_SPRITE, field<&Context::point, &PointAttrib::sprite>, GL_POINT_BIT, 0, kHeld),
+    entry(GL_POLYGON_SMOOTH, field<&Context::polygon, &PolygonAttrib::smooth>, GL_POLYGON_BIT, 0, kHeld),
+    entry(GL_POLYGON_STIPPLE, field<&Context::polygon, &PolygonAttrib::stipple>, GL_POLYGON_BIT, 0, kHeld),
+    entry(GL_POLYGON_OFFSET_POINT, field<&Context::polygon, &PolygonAttrib::offsetPoint>, GL_POLYGON_BIT, 0,
+          kHeld),
+    entry(GL_POLYGON_OFFSET_LINE, field<&Context::polygon, &PolygonAttrib::offsetLine>, GL_POLYGON_BIT, 0,
+          kHeld),
+    entry(GL_POLYGON_OFFSET_FILL, field<&Context::polygon, &PolygonAttrib::offsetFill>, GL_POLYGON_BIT, 0,
+          kHeld),
+    entry(GL_SCISSOR_TEST, field<&Context::scissor, &ScissorAttrib::test>, GL_SCISSOR_BIT, 0, kHeld),
+    entry(GL_STENCIL_TEST, field<&Context::stencil, &StencilAttrib::test>, GL_STENCIL_BUFFER_BIT, 0, kHeld),
+    entry(GL_MULTISAMPLE, field<&Context::multisample, &MultisampleAttrib::multisample>, GL_MULTISAMPLE_BIT,
+          0, kHeld),
+    entry(GL_SAMPLE_ALPHA_TO_COVERAGE,
+          field<&Context::multisample, &MultisampleAttrib::sampleAlphaToCoverage>, GL_MULTISAMPLE_BIT, 0,
+          kHeld),
+    entry(GL_SAMPLE_ALPHA_TO_ONE, field<&Context::multisample, &MultisampleAttrib::sampleAlphaToOne>,
+          GL_MULTISAMPLE_BIT, 0, kHeld),
+    entry(GL_SAMPLE_COVERAGE, field<&Context::multisample, &MultisampleAttrib::sampleCoverage>,
+          GL_MULTISAMPLE_BIT, 0, kHeld),
+    entry(GL_TEXTURE_1D, textureUnit<&TextureUnitEnables::texture1D>, GL_TEXTURE_BIT, 0, kHeld, true),
+    entry(GL_TEXTURE_2D, textureUnit<&TextureUnitEnables::texture2D>, GL_TEXTURE_BIT, 0, kHeld, true),
+    entry(GL_TEXTURE_3D, textureUnit<&TextureUnitEnables::texture3D>, GL_TEXTURE_BIT, 0, kHeld, true),
+    entry(GL_TEXTURE_CUBE_MAP, textureUnit<&TextureUnitEnables::textureCubeMap>, GL_TEXTURE_BIT, 0, kHeld,
+          true),
+    entry(GL_TEXTURE_GEN_S, textureUnit<&TextureUnitEnables::genS>, GL_TEXTURE_BIT, 0, kHeld, true),
+    entry(GL_TEXTURE_GEN_T, textureUnit<&TextureUnitEnables::genT>, GL_TEXTURE_BIT, 0, kHeld, true),
+    entry(GL_TEXTURE_GEN_R, textureUnit<&TextureUnitEnables::genR>, GL_TEXTURE_BIT, 0, kHeld, true),
+    entry(GL_TEXTURE_GEN_Q, textureUnit<&TextureUnitEnables::genQ>, GL_TEXTURE_BIT, 0, kHeld, true),
+}};
+
+}  // namespace
+
+const std::array<Capability, kCapabilityCount>& capabilities() { return kCapabilities; }
+
+const Capability* findCapability(GLenum cap) {
+  for (const Capability& c : kCapabilities)
+    if (c.cap == cap) return &c;
+  return nullptr;
+}
+
+void storeCapability(Context& ctx, const Capability& c, bool enabled) {
+  ctx.markChanged(GL_ENABLE_BIT | c.groups, c.dirty);
+  c.flag(ctx) = enabled;
+}
+
+EnableAttrib saveEnables(Context& ctx) {
+  EnableAttrib e;
+  for (int i = 0; i < kCapabilityCount; ++i)
+    if (!kCapabilities[i].perTextureUnit) e.flag[i] = kCapabilities[i].flag(ctx);
+  e.texture = ctx.texture.enables;
+  return e;
+}
+
+void restoreEnables(Context& ctx, const EnableAttrib& saved) {
+  for (int i = 0; i < kCapabilityCount; ++i) {
+    const Capability& c = kCapabilities[i];
+    if (!c.perTextureUnit && c.flag(ctx) != saved.flag[i]) storeCapability(ctx, c, saved.flag[i]);
+  }
+  if (!(ctx.texture.enables == saved.texture)) {
+    ctx.markChanged(GL_ENABLE_BIT | GL_TEXTURE_BIT, 0);
+    ctx.texture.enables = saved.texture;
+  }
+}
+
+}  // namespace glfixed

@@ -5,6 +5,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "api/api.h"
+#include "api/eval_commands.h"
 #include "vertex/lighting_queries.h"
 
 using namespace glfixed;
@@ -119,6 +120,11 @@ bool queryState(Context& ctx, GLenum pname, StateValue& out) {
       break;
   }
   int count = 0;
+  if (api::getEvalState(ctx, pname, out.v, &count)) {
+    out.count = count;
+    out.kind = Kind::kPlain;
+    return true;
+  }
   if (getLightingState(ctx, pname, out.v, &count)) {
     out.count = count;
     out.kind = isNormalizedLightingQuery(pname) ? Kind::kNormalized : Kind::kPlain;

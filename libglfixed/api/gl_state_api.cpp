@@ -17,7 +17,7 @@ bool* coreCapability(Context& ctx, GLenum cap) {
     case GL_DEPTH_TEST: return &ctx.depth.test;
     case GL_CULL_FACE: return &ctx.polygon.cullFace;
     case GL_DITHER: return &ctx.colorBuffer.dither;
-    default: return nullptr;
+    default: return ctx.eval.capability(cap);  // the evaluator maps and GL_AUTO_NORMAL (§5.1)
   }
 }
 

@@ -9,6 +9,7 @@
 #include "pipeline/vertex_batch.h"
 #include "state/attribs.h"
 #include "state/dirty.h"
+#include "state/eval_attrib.h"
 #include "state/lighting_attrib.h"
 #include "state/matrix_stack.h"
 #include "vertex/light_constants.h"
@@ -34,6 +35,8 @@ class Context {
   PolygonAttrib polygon;
   PixelStoreAttrib pixelStore;
   LightingAttrib lighting;
+  EvalAttrib eval;
+  EvalMaps evalMaps;  // in no attribute group (table 6.39)
   MatrixStack modelview{kMaxModelviewStackDepth};
   MatrixStack projection{kMaxProjectionStackDepth};
 

@@ -349,7 +349,10 @@ TEST_F(EvalTest, RefusedBetweenBeginAndEnd) {
 // ---- evaluation ------------------------------------------------------------------
 
 // The evaluated colour, normal and texture coordinates go to the vertex only:
-// the current values stay as they were (Mesa restores them after the vertex).
+// the current values stay as they were (Mesa restores them after the vertex.
+// The maps first make these attributes vertex data here, where Mesa copies
+// stale vertex memory into the current values, as the next test shows; that
+// memory happens to hold what glColor/glNormal/glTexCoord put there.)
 TEST_F(EvalTest, EvalCoordLeavesTheCurrentValues) {
   const GLfloat color[8] = {0.25f, 0.5f, 0.75f, 1.0f, 0.5f, 0.25f, 0.0f, 0.5f};
   const GLfloat normal[6] = {1, 0, 0, 0, 1, 0};
@@ -383,6 +386,30 @@ TEST_F(EvalTest, EvalCoordLeavesTheCurrentValues) {
   EXPECT_EQ(t[1], 6.0f);
   EXPECT_EQ(t[2], 7.0f);
   EXPECT_EQ(t[3], 8.0f);
+}
+
+// The same after a whole glEvalMesh2 whose colour and normal maps first made
+// those attributes vertex data, once the draw is flushed. Mesa copies stale
+// vertex memory into the current values there (here (0,0,0,0) and (0,0,0)).
+TEST_F(EvalTest, EvalMeshLeavesTheCurrentValues) {
+  GLFX_SKIP_ON_MESA("a map that first makes an attribute vertex data leaves its current value undefined");
+  const GLfloat square[12] = {-0.5f, -0.5f, 0, -0.5f, 0.5f, 0, 0.5f, -0.5f, 0, 0.5f, 0.5f, 0};
+  const GLfloat red[16] = {1, 0, 0, 1, 1, 0, 0, 1, 1, 0, 0, 1, 1, 0, 0, 1};
+  glMap2f(GL_MAP2_VERTEX_3, 0, 1, 3, 2, 0, 1, 6, 2, square);
+  glMap2f(GL_MAP2_COLOR_4, 0, 1, 4, 2, 0, 1, 8, 2, red);
+  glEnable(GL_MAP2_VERTEX_3);
+  glEnable(GL_MAP2_COLOR_4);
+  glEnable(GL_AUTO_NORMAL);
+  glMapGrid2f(3, 0, 1, 3, 0, 1);
+  glEvalMesh2(GL_FILL, 0, 3, 0, 3);
+  glFinish();
+  ASSERT_NO_GL_ERROR();
+  std::array<GLfloat, 4> c = GetFloats<4>(GL_CURRENT_COLOR);
+  for (GLfloat x : c) EXPECT_EQ(x, 1.0f);
+  std::array<GLfloat, 3> n = GetFloats<3>(GL_CURRENT_NORMAL);
+  EXPECT_EQ(n[0], 0.0f);
+  EXPECT_EQ(n[1], 0.0f);
+  EXPECT_EQ(n[2], 1.0f);
 }
 
 // Pixel (x, y) of the 64x64 buffer (row 0 at the bottom).

@@ -65,4 +65,37 @@ static void eval_rotate_vertices(const eval_case *c, int k, float *out)
         for (j = 0; j < 3; j++) out[i * 3 + j] = c->vertex[i * 3 + (j + k) % 3];
 }
 
+/* A grid case: glMapGrid over a random (possibly reversed) range, then
+ * glEvalMesh(GL_POINT) over a random part of it (past its ends too) and a few
+ * glEvalPoint: the parameter arithmetic of the grid commands. The map is the
+ * case's VERTEX_3 map. */
+typedef struct {
+    int n, m, i1, i2, j1, j2;
+    float gu1, gu2, gv1, gv2;
+    int points[8][2];
+} eval_grid;
+
+enum { EVAL_GRIDS = 120 };
+
+static void eval_make_grid(int n, eval_grid *g)
+{
+    eval_rng r;
+    int i;
+    r.state = 0x85ebca6bu * (unsigned)(n + 7);
+    g->n = 1 + (int)(eval_rand01(&r) * 12.0f);
+    g->m = 1 + (int)(eval_rand01(&r) * 12.0f);
+    g->gu1 = eval_rand(&r, -3.0f, 3.0f);
+    g->gu2 = eval_rand(&r, -3.0f, 3.0f);
+    g->gv1 = eval_rand(&r, -3.0f, 3.0f);
+    g->gv2 = eval_rand(&r, -3.0f, 3.0f);
+    g->i1 = (int)(eval_rand01(&r) * 5.0f) - 2;
+    g->i2 = g->i1 + (int)(eval_rand01(&r) * (float)(g->n + 3));
+    g->j1 = (int)(eval_rand01(&r) * 5.0f) - 2;
+    g->j2 = g->j1 + (int)(eval_rand01(&r) * (float)(g->m + 3));
+    for (i = 0; i < 8; i++) {
+        g->points[i][0] = (int)(eval_rand01(&r) * (float)(g->n + 5)) - 2;
+        g->points[i][1] = (int)(eval_rand01(&r) * (float)(g->m + 5)) - 2;
+    }
+}
+
 #endif

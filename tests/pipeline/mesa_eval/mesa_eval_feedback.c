@@ -59,6 +59,45 @@ int main(void)
             glDisable(GL_MAP2_VERTEX_3);
         }
     }
+    /* The grids: glEvalMesh1/2(GL_POINT) and glEvalPoint1/2, window x only. */
+    for (n = 0; n < EVAL_GRIDS; n++) {
+        static GLfloat big[(15 * 15 + 8) * 13 + 16];
+        eval_grid g;
+        GLint values;
+        eval_make_case(n, &c);
+        eval_make_grid(n, &g);
+        for (k = 0; k < EVAL_ROTATIONS; k++) {
+            eval_rotate_vertices(&c, k, rotated);
+            glDisable(GL_AUTO_NORMAL);
+            if (c.two_d) {
+                glMap2f(GL_MAP2_VERTEX_3, c.u1, c.u2, 3 * c.vorder, c.uorder, c.v1, c.v2, 3, c.vorder, rotated);
+                glEnable(GL_MAP2_VERTEX_3);
+                glMapGrid2f(g.n, g.gu1, g.gu2, g.m, g.gv1, g.gv2);
+            } else {
+                glMap1f(GL_MAP1_VERTEX_3, c.u1, c.u2, 3, c.uorder, rotated);
+                glEnable(GL_MAP1_VERTEX_3);
+                glMapGrid1f(g.n, g.gu1, g.gu2);
+            }
+            glFeedbackBuffer(sizeof big / sizeof big[0], GL_3D, big);
+            glRenderMode(GL_FEEDBACK);
+            if (c.two_d) glEvalMesh2(GL_POINT, g.i1, g.i2, g.j1, g.j2);
+            else glEvalMesh1(GL_POINT, g.i1, g.i2);
+            glBegin(GL_POINTS);
+            for (i = 0; i < 8; i++) {
+                if (c.two_d) glEvalPoint2(g.points[i][0], g.points[i][1]);
+                else glEvalPoint1(g.points[i][0]);
+            }
+            glEnd();
+            values = glRenderMode(GL_RENDER);
+            if (values < 0) return 5;
+            for (i = 0; i + 3 < values; i += 4) {
+                if (big[i] != GL_POINT_TOKEN) return 3;
+                printf("grid %d %d %a\n", n, k, big[i + 1]);
+            }
+            glDisable(GL_MAP1_VERTEX_3);
+            glDisable(GL_MAP2_VERTEX_3);
+        }
+    }
     if (glGetError() != GL_NO_ERROR) return 4;
     OSMesaDestroyContext(ctx);
     return 0;

@@ -289,6 +289,29 @@ TEST_F(EvalTest, GridAndMeshErrors) {
   EXPECT_GL_ERROR(GL_INVALID_ENUM);
 }
 
+// GL_POINT and GL_LINE meshes of both dimensions run without an error (their
+// vertices are compared with Mesa's by tests/pipeline/mesa_eval for GL_POINT;
+// lines are not rasterized yet, so no pixels are checked here).
+TEST_F(EvalTest, PointAndLineMeshesRaiseNoError) {
+  const GLfloat curve[12] = {-0.5f, -0.5f, 0, 0, 0.5f, 0, 0.5f, -0.5f, 0, 0.6f, 0.2f, 0};
+  glMap1f(GL_MAP1_VERTEX_3, 0, 1, 3, 4, curve);
+  glMap2f(GL_MAP2_VERTEX_3, 0, 1, 6, 2, 0, 1, 3, 2, curve);
+  glEnable(GL_MAP1_VERTEX_3);
+  glEnable(GL_MAP2_VERTEX_3);
+  glMapGrid1f(8, 0, 1);
+  glMapGrid2f(4, 0, 1, 3, 0, 1);
+  for (GLenum mode : {GL_POINT, GL_LINE}) {
+    glEvalMesh1(mode, 0, 8);
+    glEvalMesh1(mode, 5, 2);  // empty
+    glEvalMesh2(mode, 0, 4, 0, 3);
+    glEvalMesh2(mode, -1, 5, 2, 2);
+    EXPECT_NO_GL_ERROR();
+  }
+  glEvalMesh2(GL_FILL, 0, 4, 0, 3);
+  glFinish();
+  EXPECT_NO_GL_ERROR();
+}
+
 TEST_F(EvalTest, GetMapErrors) {
   GLfloat f[16];
   GLdouble d[16];

@@ -26,10 +26,12 @@ bool checkMapArguments(Context& ctx, GLenum target, bool twoD, float u1, float u
     error = GL_INVALID_VALUE;
   else if (uorder < 1 || uorder > kMaxEvalOrder || (twoD && (vorder < 1 || vorder > kMaxEvalOrder)))
     error = GL_INVALID_VALUE;
-  else if (k == 0 || (twoD ? !isMap2Target(target) : !isMap1Target(target)))
+  else if (k == 0)
     error = GL_INVALID_ENUM;
   else if (ustride < k || (twoD && vstride < k))
     error = GL_INVALID_VALUE;
+  else if (twoD ? !isMap2Target(target) : !isMap1Target(target))  // a map of the other dimension
+    error = GL_INVALID_ENUM;
   else if (points.empty())  // a null pointer (Mesa accepts it for glMap2, then reads nothing)
     error = GL_INVALID_VALUE;
   if (error != GL_NO_ERROR) ctx.recordError(error);
@@ -164,7 +166,7 @@ void evalMesh1(GLenum mode, GLint i1, GLint i2) {
   const float du = (e.grid1U2 - e.grid1U1) / static_cast<float>(e.grid1Segments);
   float u = e.grid1U1 + static_cast<float>(i1) * du;
   glBegin(primitive);
-  for (GLint i = i1; i <= i2; ++i, u += du) evalCoord1(u);
+  for (long long i = i1; i <= i2; ++i, u += du) evalCoord1(u);  // 64-bit: i2 may be INT_MAX
   glEnd();
 }
 
@@ -182,7 +184,7 @@ void evalMesh2(GLenum mode, GLint i1, GLint i2, GLint j1, GLint j2) {
   const float u1 = e.grid2U1 + static_cast<float>(i1) * du;
   const float v1 = e.grid2V1 + static_cast<float>(j1) * dv;
   float u, v;
-  GLint i, j;
+  long long i, j;  // 64-bit: i2 or j2 may be INT_MAX
   switch (mode) {
     case GL_POINT:
       glBegin(GL_POINTS);

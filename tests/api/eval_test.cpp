@@ -475,6 +475,61 @@ TEST_F(EvalTest, EvalMesh2FillDrawsTheSurface) {
   EXPECT_EQ(Pixel(p, 44, 24)[0], 255);
 }
 
+// Every glEvalCoord variant makes the same vertex: a triangle of the lower
+// left quarter, from a 2D square map or (1D) a fan on a straight MAP1 edge.
+TEST_F(EvalTest, EveryEvalCoordVariantDraws) {
+  const GLfloat square[12] = {-1, -1, 0, -1, 1, 0, 1, -1, 0, 1, 1, 0};  // u along y, v along x
+  const GLfloat edge[6] = {-0.9f, 0.1f, 0, 0.1f, -0.9f, 0};             // 1D: u from (-0.9,0.1) to (0.1,-0.9)
+  glMap2f(GL_MAP2_VERTEX_3, 0, 1, 3, 2, 0, 1, 6, 2, square);
+  glMap1f(GL_MAP1_VERTEX_3, 0, 1, 3, 2, edge);
+  glEnable(GL_MAP2_VERTEX_3);
+  glEnable(GL_MAP1_VERTEX_3);
+  glClearColor(0, 0, 0, 0);
+  const std::function<void(float, float)> variants[] = {
+      [](float u, float v) { glEvalCoord2f(u, v); },
+      [](float u, float v) {
+        const GLfloat p[2] = {u, v};
+        glEvalCoord2fv(p);
+      },
+      [](float u, float v) { glEvalCoord2d(u, v); },
+      [](float u, float v) {
+        const GLdouble p[2] = {u, v};
+        glEvalCoord2dv(p);
+      },
+  };
+  const std::function<void(float)> variants1[] = {
+      [](float u) { glEvalCoord1f(u); },
+      [](float u) { glEvalCoord1fv(&u); },
+      [](float u) { glEvalCoord1d(u); },
+      [](float u) {
+        const GLdouble d = u;
+        glEvalCoord1dv(&d);
+      },
+  };
+  for (int i = 0; i < 8; ++i) {
+    SCOPED_TRACE(::testing::Message() << "variant " << i);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glColor3f(0, 1, 0);
+    if (i < 4) {
+      glBegin(GL_TRIANGLES);
+      variants[i](0.05f, 0.05f);
+      variants[i](0.45f, 0.05f);
+      variants[i](0.05f, 0.45f);
+      glEnd();
+    } else {
+      glBegin(GL_TRIANGLE_FAN);
+      glVertex2f(-0.9f, -0.9f);
+      variants1[i - 4](1.0f);
+      variants1[i - 4](0.0f);
+      glEnd();
+    }
+    ASSERT_NO_GL_ERROR();
+    const unsigned char* p = pixels();
+    EXPECT_EQ(Pixel(p, 12, 12)[1], 255) << "inside";
+    EXPECT_EQ(Pixel(p, 40, 40)[1], 0) << "outside";
+  }
+}
+
 // glEvalCoord2 and glEvalPoint2 inside glBegin/glEnd make the vertices of an
 // ordinary primitive; the evaluated colour is theirs only.
 TEST_F(EvalTest, EvalCoordInsideBeginEnd) {

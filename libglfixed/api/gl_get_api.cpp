@@ -7,6 +7,7 @@
 #include "api/api.h"
 #include "state/vertex_array_queries.h"
 #include "state/capabilities.h"
+#include "api/eval_commands.h"
 #include "vertex/lighting_queries.h"
 
 using namespace glfixed;
@@ -137,6 +138,11 @@ bool queryState(Context& ctx, GLenum pname, StateValue& out) {
   }
   int count = 0;
   if (getVertexArrayState(ctx, pname, out.v, &count)) {
+    out.count = count;
+    out.kind = Kind::kPlain;
+    return true;
+  }
+  if (api::getEvalState(ctx, pname, out.v, &count)) {
     out.count = count;
     out.kind = Kind::kPlain;
     return true;

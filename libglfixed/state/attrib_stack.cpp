@@ -46,14 +46,15 @@ void restoreLighting(Context& c, const AttribNode& n) {
   c.markDirty(kDirtyLighting);  // light positions restore as stored, in eye space
 }
 
-// The table, in Mesa's order of restoration (main/attrib.c); GL_EVAL_BIT and
-// GL_LIST_BIT come with the evaluators and display lists.
+// The table, in Mesa's order of restoration (main/attrib.c); GL_LIST_BIT
+// comes with the display lists.
 const Group kGroups[] = {
     copied<&Context::accum, &AttribNode::accum>(GL_ACCUM_BUFFER_BIT),
     copied<&Context::colorBuffer, &AttribNode::colorBuffer>(GL_COLOR_BUFFER_BIT),
     copied<&Context::current, &AttribNode::current>(GL_CURRENT_BIT),
     copied<&Context::depth, &AttribNode::depth>(GL_DEPTH_BUFFER_BIT),
     Group{GL_ENABLE_BIT, saveEnable, restoreEnable},
+    copied<&Context::eval, &AttribNode::eval>(GL_EVAL_BIT),
     copied<&Context::fog, &AttribNode::fog>(GL_FOG_BIT),
     copied<&Context::hint, &AttribNode::hint>(GL_HINT_BIT),
     Group{GL_LIGHTING_BIT, saveCopy<&Context::lighting, &AttribNode::lighting>, restoreLighting},

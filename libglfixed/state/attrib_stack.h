@@ -9,6 +9,7 @@
 #include "state/attrib_groups.h"
 #include "state/attribs.h"
 #include "state/capabilities.h"
+#include "state/eval_attrib.h"
 #include "state/lighting_attrib.h"
 
 namespace glfixed {
@@ -18,7 +19,7 @@ class Context;
 constexpr int kMaxAttribStackDepth = 16;  // GL_MAX_ATTRIB_STACK_DEPTH, Mesa's too
 
 // One glPushAttrib: the mask and a copy of each group (only those in the mask
-// are meaningful). Adding a group (GL_EVAL_BIT, GL_LIST_BIT) is one member
+// are meaningful). Adding a group (GL_LIST_BIT) is one member
 // here and one entry in attrib_stack.cpp's table.
 struct AttribNode {
   GLbitfield mask = 0;
@@ -30,6 +31,7 @@ struct AttribNode {
   CurrentAttrib current;
   DepthBufferAttrib depth;
   EnableAttrib enable;
+  EvalAttrib eval;
   FogAttrib fog;
   HintAttrib hint;
   LightingAttrib lighting;

@@ -19,6 +19,14 @@ template <int I>
 bool& clipPlane(Context& c) {
   return c.transform.clipPlaneEnabled[I];
 }
+template <int Slot>
+bool& map1(Context& c) {
+  return c.eval.map1Enabled[Slot];
+}
+template <int Slot>
+bool& map2(Context& c) {
+  return c.eval.map2Enabled[Slot];
+}
 template <auto Flag>
 bool& textureUnit(Context& c) {
   return c.texture.activeEnables().*Flag;
@@ -26,8 +34,7 @@ bool& textureUnit(Context& c) {
 
 constexpr bool kSettable = true, kHeld = false;
 
-// One row per GL 2.1 capability except the evaluator maps and GL_AUTO_NORMAL
-// (GL_EVAL_BIT, added with the evaluators).
+// One row per GL 2.1 capability.
 constexpr Capability entry(GLenum cap, bool& (*flag)(Context&), GLbitfield groups, uint32_t dirty,
                            bool settable, bool perUnit = false) {
   return Capability{cap, flag, groups, dirty, settable, perUnit};
@@ -55,6 +62,26 @@ const std::array<Capability, kCapabilityCount> kCapabilities = {{
           kDirtyLighting, kSettable),
     entry(GL_RESCALE_NORMAL, field<&Context::transform, &TransformAttrib::rescaleNormal>, GL_TRANSFORM_BIT,
           kDirtyLighting, kSettable),
+    // The evaluators (§5.1): GL_EVAL_BIT and GL_ENABLE_BIT both hold them.
+    entry(GL_AUTO_NORMAL, field<&Context::eval, &EvalAttrib::autoNormal>, GL_EVAL_BIT, 0, kSettable),
+    entry(GL_MAP1_COLOR_4, map1<0>, GL_EVAL_BIT, 0, kSettable),
+    entry(GL_MAP1_INDEX, map1<1>, GL_EVAL_BIT, 0, kSettable),
+    entry(GL_MAP1_NORMAL, map1<2>, GL_EVAL_BIT, 0, kSettable),
+    entry(GL_MAP1_TEXTURE_COORD_1, map1<3>, GL_EVAL_BIT, 0, kSettable),
+    entry(GL_MAP1_TEXTURE_COORD_2, map1<4>, GL_EVAL_BIT, 0, kSettable),
+    entry(GL_MAP1_TEXTURE_COORD_3, map1<5>, GL_EVAL_BIT, 0, kSettable),
+    entry(GL_MAP1_TEXTURE_COORD_4, map1<6>, GL_EVAL_BIT, 0, kSettable),
+    entry(GL_MAP1_VERTEX_3, map1<7>, GL_EVAL_BIT, 0, kSettable),
+    entry(GL_MAP1_VERTEX_4, map1<8>, GL_EVAL_BIT, 0, kSettable),
+    entry(GL_MAP2_COLOR_4, map2<0>, GL_EVAL_BIT, 0, kSettable),
+    entry(GL_MAP2_INDEX, map2<1>, GL_EVAL_BIT, 0, kSettable),
+    entry(GL_MAP2_NORMAL, map2<2>, GL_EVAL_BIT, 0, kSettable),
+    entry(GL_MAP2_TEXTURE_COORD_1, map2<3>, GL_EVAL_BIT, 0, kSettable),
+    entry(GL_MAP2_TEXTURE_COORD_2, map2<4>, GL_EVAL_BIT, 0, kSettable),
+    entry(GL_MAP2_TEXTURE_COORD_3, map2<5>, GL_EVAL_BIT, 0, kSettable),
+    entry(GL_MAP2_TEXTURE_COORD_4, map2<6>, GL_EVAL_BIT, 0, kSettable),
+    entry(GL_MAP2_VERTEX_3, map2<7>, GL_EVAL_BIT, 0, kSettable),
+    entry(GL_MAP2_VERTEX_4, map2<8>, GL_EVAL_BIT, 0, kSettable),
     // State without its stage yet.
     entry(GL_ALPHA_TEST, field<&Context::colorBuffer, &ColorBufferAttrib::alphaTest>, GL_COLOR_BUFFER_BIT, 0,
           kHeld),

@@ -15,6 +15,7 @@
 #include "state/attribs.h"
 #include "state/buffer_objects.h"
 #include "state/dirty.h"
+#include "state/eval_attrib.h"
 #include "state/lighting_attrib.h"
 #include "state/matrix_stack.h"
 #include "state/vertex_array_attrib.h"
@@ -67,6 +68,8 @@ class Context {
   MultisampleAttrib multisample;
   TextureAttrib texture;
   AttribStack attribStack;  // glPushAttrib/glPopAttrib
+  EvalAttrib eval;
+  EvalMaps evalMaps;  // in no attribute group (table 6.39)
   MatrixStack modelview{kMaxModelviewStackDepth};
   MatrixStack projection{kMaxProjectionStackDepth};
 

@@ -115,6 +115,13 @@ bool queryState(Context& ctx, GLenum pname, StateValue& out) {
     case GL_UNPACK_ROW_LENGTH: out.set({double(ctx.pixelStore.unpackRowLength)}); return true;
     case GL_UNPACK_SKIP_PIXELS: out.set({double(ctx.pixelStore.unpackSkipPixels)}); return true;
     case GL_UNPACK_SKIP_ROWS: out.set({double(ctx.pixelStore.unpackSkipRows)}); return true;
+    // §5.2, §5.3 (tables 6.57, 6.58)
+    case GL_RENDER_MODE: out.set({double(ctx.renderMode.mode)}); return true;
+    case GL_NAME_STACK_DEPTH: out.set({double(ctx.renderMode.select.nameStackDepth)}); return true;
+    case GL_MAX_NAME_STACK_DEPTH: out.set({double(kMaxNameStackDepth)}); return true;
+    case GL_SELECTION_BUFFER_SIZE: out.set({double(ctx.renderMode.select.bufferSize)}); return true;
+    case GL_FEEDBACK_BUFFER_SIZE: out.set({double(ctx.renderMode.feedback.bufferSize)}); return true;
+    case GL_FEEDBACK_BUFFER_TYPE: out.set({double(ctx.renderMode.feedback.type)}); return true;
     default:
       break;
   }

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "primitive/primitive.h"
+#include "primitive/select_feedback.h"
 #include "state/context.h"
 #include "vertex/vertex_stage.h"
 
@@ -48,6 +49,12 @@ void drawBatch(Context& ctx, const VertexBatch& batch) {
   vertex::shadeBatch(vs, batch, shaded);
   primitive::PrimitiveState ps = primitiveState(ctx, batch.mode, shaded.hasSecondary);
   ps.constantPrimary = !vs.lighting && !ctx.vbo.colorIsVertexData;
+  // GL_SELECT and GL_FEEDBACK: transformed and clipped, never rasterized (§5.2, §5.3).
+  if (ctx.renderMode.mode == GL_SELECT)
+    return primitive::selectPrimitives(ps, shaded, ctx.framebuffer.height(), ctx.renderMode.select);
+  if (ctx.renderMode.mode == GL_FEEDBACK)
+    return primitive::feedbackPrimitives(ps, shaded, ctx.framebuffer.height(), ctx.current.texCoord[0],
+                                         ctx.renderMode.feedback);
   primitive::drawPrimitives(ps, shaded, ctx.framebuffer);
 }
 

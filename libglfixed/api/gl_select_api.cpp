@@ -71,8 +71,8 @@ GLAPI GLint APIENTRY glRenderMode(GLenum mode) {
     return 0;
   }
   // §5.2: SELECT before glSelectBuffer, FEEDBACK before glFeedbackBuffer.
-  if ((mode == GL_SELECT && rm.select.buffer == nullptr) ||
-      (mode == GL_FEEDBACK && rm.feedback.buffer == nullptr)) {
+  // (Mesa tests the buffer's size instead, and enters the mode anyway.)
+  if ((mode == GL_SELECT && !rm.select.bufferGiven) || (mode == GL_FEEDBACK && !rm.feedback.bufferGiven)) {
     ctx->recordError(GL_INVALID_OPERATION);
     return 0;
   }
@@ -101,11 +101,11 @@ GLAPI void APIENTRY glSelectBuffer(GLsizei size, GLuint* buffer) {
   if (ctx->renderMode.mode == GL_SELECT) return ctx->recordError(GL_INVALID_OPERATION);
   if (size < 0) return ctx->recordError(GL_INVALID_VALUE);
   // A null buffer with room in it would be written: refuse it as Mesa
-  // refuses it for glFeedbackBuffer. (Null with size 0 is a valid buffer
-  // that overflows at the first record.)
+  // refuses it for glFeedbackBuffer (Mesa takes it here, and crashes at the
+  // first hit). Null with size 0 is a buffer that overflows at once.
   if (!buffer && size > 0) return ctx->recordError(GL_INVALID_VALUE);
-  static GLuint noBuffer;
-  s.buffer = buffer ? buffer : &noBuffer;
+  s.buffer = buffer;
+  s.bufferGiven = true;
   s.bufferSize = size;
   s.bufferCount = 0;
   s.resetHit();
@@ -119,8 +119,8 @@ GLAPI void APIENTRY glFeedbackBuffer(GLsizei size, GLenum type, GLfloat* buffer)
   if (size < 0) return ctx->recordError(GL_INVALID_VALUE);
   if (!buffer && size > 0) return ctx->recordError(GL_INVALID_VALUE);
   if (!isFeedbackType(type)) return ctx->recordError(GL_INVALID_ENUM);
-  static GLfloat noBuffer;
-  f.buffer = buffer ? buffer : &noBuffer;
+  f.buffer = buffer;
+  f.bufferGiven = true;
   f.bufferSize = size;
   f.type = type;
   f.count = 0;

@@ -14,8 +14,9 @@ constexpr int kMaxNameStackDepth = 64;  // Mesa's MAX_NAME_STACK_DEPTH
 
 struct SelectState {
   GLuint* buffer = nullptr;  // the application's, from glSelectBuffer
-  GLsizei bufferSize = 0;
-  size_t bufferCount = 0;  // words written or that would have been (overflow)
+  GLsizei bufferSize = 0;    // > 0 only with a buffer
+  bool bufferGiven = false;  // glSelectBuffer was called (§5.2)
+  size_t bufferCount = 0;    // words written or that would have been (overflow)
   GLuint hits = 0;
   // A primitive reached the selection stage since the last hit record; the
   // window z range it covered (GL 2.1 §5.2).
@@ -45,7 +46,8 @@ struct SelectState {
 
 struct FeedbackState {
   GLfloat* buffer = nullptr;  // the application's, from glFeedbackBuffer
-  GLsizei bufferSize = 0;
+  GLsizei bufferSize = 0;     // > 0 only with a buffer
+  bool bufferGiven = false;   // glFeedbackBuffer was called (§5.3)
   GLenum type = GL_2D;
   size_t count = 0;  // values written or that would have been (overflow)
 

@@ -11,6 +11,7 @@
 #include "state/dirty.h"
 #include "state/lighting_attrib.h"
 #include "state/matrix_stack.h"
+#include "state/raster_pos.h"
 #include "state/render_mode.h"
 #include "vertex/light_constants.h"
 #include "vertex/vertex_stage.h"
@@ -37,6 +38,7 @@ class Context {
   LightingAttrib lighting;
   MatrixStack modelview{kMaxModelviewStackDepth};
   MatrixStack projection{kMaxProjectionStackDepth};
+  RasterPosState rasterPos;    // glRasterPos (§2.13); belongs to GL_CURRENT_BIT
   RenderModeState renderMode;  // glRenderMode, selection, feedback (§5.2, §5.3)
 
   Framebuffer framebuffer;

@@ -6,6 +6,7 @@
 
 namespace {
 
+using glfx_test::GetBool;
 using glfx_test::GetInt;
 
 class SelectFeedbackTest : public glfx_test::GLTest {
@@ -391,6 +392,129 @@ TEST_F(SelectFeedbackTest, NothingIsRasterizedInSelectOrFeedback) {
   p = pixels();
   for (int i = 0; i < glfx_test::kWidth * glfx_test::kHeight * 4; ++i) lit += p[i] != 0;
   EXPECT_GT(lit, 0);
+}
+
+// ---- the raster position and the pixel tokens (§2.13, §5.3) ----------------
+
+TEST_F(SelectFeedbackTest, RasterPositionState) {
+  EXPECT_EQ(GetBool(GL_CURRENT_RASTER_POSITION_VALID), GL_TRUE);
+  auto p = glfx_test::GetFloats<4>(GL_CURRENT_RASTER_POSITION);
+  EXPECT_EQ(p, (std::array<GLfloat, 4>{0, 0, 0, 1}));
+  glColor4f(0.25f, 0.5f, 0.75f, 1.0f);
+  glRasterPos2f(0.5f, -0.5f);  // identity transform, 64x64 viewport
+  p = glfx_test::GetFloats<4>(GL_CURRENT_RASTER_POSITION);
+  EXPECT_EQ(p, (std::array<GLfloat, 4>{48, 16, 0.5f, 1}));
+  EXPECT_EQ(glfx_test::GetFloats<4>(GL_CURRENT_RASTER_COLOR),
+            (std::array<GLfloat, 4>{0.25f, 0.5f, 0.75f, 1.0f}));
+  EXPECT_FLOAT_EQ(glfx_test::GetFloat(GL_CURRENT_RASTER_DISTANCE), std::sqrt(0.5f));
+  glRasterPos3f(0.0f, 0.0f, 2.0f);  // beyond the far plane
+  EXPECT_EQ(GetBool(GL_CURRENT_RASTER_POSITION_VALID), GL_FALSE);
+  glRasterPos4i(0, 0, 0, 1);
+  EXPECT_EQ(GetBool(GL_CURRENT_RASTER_POSITION_VALID), GL_TRUE);
+  glBegin(GL_POINTS);
+  glRasterPos2i(1, 1);
+  glEnd();
+  EXPECT_GL_ERROR(GL_INVALID_OPERATION);
+  EXPECT_EQ(glfx_test::GetFloats<4>(GL_CURRENT_RASTER_POSITION), (std::array<GLfloat, 4>{32, 32, 0.5f, 1}));
+}
+
+TEST_F(SelectFeedbackTest, PixelTokens) {
+  static const GLubyte bits[8] = {};
+  glFeedbackBuffer(64, GL_2D, feedback_);
+  glRenderMode(GL_FEEDBACK);
+  glRasterPos2f(0.5f, -0.5f);
+  glBitmap(8, 8, 0, 0, 2.0f, 3.0f, bits);
+  glDrawPixels(1, 1, GL_RGBA, GL_UNSIGNED_BYTE, bits);
+  glCopyPixels(0, 0, 1, 1, GL_COLOR);
+  glRasterPos3f(0.0f, 0.0f, 2.0f);  // invalid: nothing is fed back
+  glBitmap(8, 8, 0, 0, 2.0f, 3.0f, bits);
+  glDrawPixels(1, 1, GL_RGBA, GL_UNSIGNED_BYTE, bits);
+  glCopyPixels(0, 0, 1, 1, GL_COLOR);
+  EXPECT_EQ(glRenderMode(GL_RENDER), 9);
+  EXPECT_EQ(feedback_[0], static_cast<GLfloat>(GL_BITMAP_TOKEN));
+  EXPECT_EQ(feedback_[1], 48.0f);
+  EXPECT_EQ(feedback_[3], static_cast<GLfloat>(GL_DRAW_PIXEL_TOKEN));
+  EXPECT_EQ(feedback_[4], 50.0f);  // moved by the bitmap
+  EXPECT_EQ(feedback_[5], 19.0f);
+  EXPECT_EQ(feedback_[6], static_cast<GLfloat>(GL_COPY_PIXEL_TOKEN));
+  EXPECT_NO_GL_ERROR();
+}
+
+TEST_F(SelectFeedbackTest, RasterPositionIsAHitPixelsAreNot) {
+  static const GLubyte bits[8] = {};
+  glSelectBuffer(64, select_);
+  glRenderMode(GL_SELECT);
+  glInitNames();
+  glPushName(1);
+  glBitmap(8, 8, 0, 0, 2.0f, 3.0f, bits);
+  glDrawPixels(1, 1, GL_RGBA, GL_UNSIGNED_BYTE, bits);
+  glCopyPixels(0, 0, 1, 1, GL_COLOR);
+  glLoadName(2);
+  glRasterPos3f(0.0f, 0.0f, 0.5f);
+  EXPECT_EQ(glRenderMode(GL_RENDER), 1);
+  EXPECT_EQ(select_[1], 3221225472u);  // window z 0.75
+  EXPECT_EQ(select_[3], 2u);
+  EXPECT_NO_GL_ERROR();
+}
+
+TEST_F(SelectFeedbackTest, PixelCommandErrors) {
+  static const GLubyte bits[64] = {};
+  glFeedbackBuffer(64, GL_2D, feedback_);
+  glRenderMode(GL_FEEDBACK);
+  glBitmap(-1, 8, 0, 0, 0, 0, bits);
+  EXPECT_GL_ERROR(GL_INVALID_VALUE);
+  glDrawPixels(1, -1, GL_RGBA, GL_UNSIGNED_BYTE, bits);
+  EXPECT_GL_ERROR(GL_INVALID_VALUE);
+  glDrawPixels(1, 1, GL_RGBA8, GL_UNSIGNED_BYTE, bits);
+  EXPECT_GL_ERROR(GL_INVALID_ENUM);
+  glDrawPixels(1, 1, GL_RGBA, GL_RGBA, bits);
+  EXPECT_GL_ERROR(GL_INVALID_ENUM);
+  glDrawPixels(1, 1, GL_RGBA, GL_BITMAP, bits);
+  EXPECT_GL_ERROR(GL_INVALID_ENUM);
+  glDrawPixels(1, 1, GL_RGBA, GL_UNSIGNED_SHORT_5_6_5, bits);
+  EXPECT_GL_ERROR(GL_INVALID_OPERATION);
+  glDrawPixels(1, 1, GL_RGB, GL_UNSIGNED_INT_8_8_8_8, bits);
+  EXPECT_GL_ERROR(GL_INVALID_OPERATION);
+  glDrawPixels(1, 1, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, bits);  // no stencil buffer
+  EXPECT_GL_ERROR(GL_INVALID_OPERATION);
+  glCopyPixels(0, 0, -1, 1, GL_COLOR);
+  EXPECT_GL_ERROR(GL_INVALID_VALUE);
+  glCopyPixels(0, 0, 1, 1, GL_RGBA);
+  EXPECT_GL_ERROR(GL_INVALID_ENUM);
+  glCopyPixels(0, 0, 1, 1, GL_STENCIL);
+  EXPECT_GL_ERROR(GL_INVALID_OPERATION);
+  glBegin(GL_POINTS);
+  glBitmap(0, 0, 0, 0, 0, 0, bits);
+  glEnd();
+  EXPECT_GL_ERROR(GL_INVALID_OPERATION);
+  glBegin(GL_POINTS);
+  glDrawPixels(1, 1, GL_RGBA, GL_UNSIGNED_BYTE, bits);
+  glEnd();
+  EXPECT_GL_ERROR(GL_INVALID_OPERATION);
+  glBegin(GL_POINTS);
+  glCopyPixels(0, 0, 1, 1, GL_COLOR);
+  glEnd();
+  EXPECT_GL_ERROR(GL_INVALID_OPERATION);
+  EXPECT_EQ(glRenderMode(GL_RENDER), 0);  // nothing fed back
+  // Valid pixel formats raise nothing.
+  glFeedbackBuffer(64, GL_2D, feedback_);
+  glRenderMode(GL_FEEDBACK);
+  glDrawPixels(1, 1, GL_DEPTH_COMPONENT, GL_FLOAT, bits);
+  glDrawPixels(1, 1, GL_BGRA, GL_UNSIGNED_INT_8_8_8_8_REV, bits);
+  glDrawPixels(1, 1, GL_LUMINANCE_ALPHA, GL_SHORT, bits);
+  glDrawPixels(1, 1, GL_RGB, GL_UNSIGNED_BYTE_3_3_2, bits);
+  glDrawPixels(1, 1, GL_COLOR_INDEX, GL_BITMAP, bits);
+  glCopyPixels(0, 0, 1, 1, GL_DEPTH);
+  EXPECT_NO_GL_ERROR();
+  EXPECT_EQ(glRenderMode(GL_RENDER), 18);
+}
+
+TEST_F(SelectFeedbackTest, EmptyBitmapMovesTheRasterPositionWhenRendering) {
+  glRasterPos2f(0.0f, 0.0f);
+  glBitmap(0, 0, 0, 0, 3.5f, -2.0f, nullptr);
+  EXPECT_NO_GL_ERROR();
+  EXPECT_EQ(glfx_test::GetFloats<4>(GL_CURRENT_RASTER_POSITION),
+            (std::array<GLfloat, 4>{35.5f, 30, 0.5f, 1}));
 }
 
 }  // namespace

@@ -24,10 +24,12 @@ bool isFeedbackType(GLenum type) {
 
 // The name-stack commands act in GL_SELECT only (§5.2: "ignored" otherwise,
 // no error), and close the current hit record first: a primitive drawn
-// before the change belongs to the old names.
+// before the change belongs to the old names. Outside GL_SELECT they do not
+// end Mesa's buffered draw (scene names_in_render_mode).
 Context* nameStackContext() {
-  Context* ctx = api::contextOutsideBeginEnd();
+  Context* ctx = api::contextForQuery();
   if (!ctx || ctx->renderMode.mode != GL_SELECT) return nullptr;
+  pipeline::flushVertices(*ctx);
   SelectState& s = ctx->renderMode.select;
   if (s.hitFlag) s.writeHitRecord();
   return ctx;
@@ -127,26 +129,32 @@ GLAPI void APIENTRY glFeedbackBuffer(GLsizei size, GLenum type, GLfloat* buffer)
 }
 
 GLAPI void APIENTRY glPassThrough(GLfloat token) {
-  Context* ctx = api::contextOutsideBeginEnd();
+  // Outside GL_FEEDBACK: ignored, and Mesa's buffered draw goes on.
+  Context* ctx = api::contextForQuery();
   if (!ctx || ctx->renderMode.mode != GL_FEEDBACK) return;
+  pipeline::flushVertices(*ctx);  // the primitives before it come first
   ctx->renderMode.feedback.token(static_cast<GLfloat>(GL_PASS_THROUGH_TOKEN));
   ctx->renderMode.feedback.token(token);
 }
 
 GLAPI void APIENTRY glInitNames(void) {
-  Context* ctx = api::contextOutsideBeginEnd();
+  Context* ctx = api::contextForQuery();
   if (!ctx) return;
   SelectState& s = ctx->renderMode.select;
-  if (ctx->renderMode.mode == GL_SELECT && s.hitFlag) s.writeHitRecord();
+  if (ctx->renderMode.mode == GL_SELECT) {
+    pipeline::flushVertices(*ctx);
+    if (s.hitFlag) s.writeHitRecord();
+  }
   s.nameStackDepth = 0;
   s.resetHit();
 }
 
 GLAPI void APIENTRY glLoadName(GLuint name) {
-  Context* ctx = api::contextOutsideBeginEnd();
+  Context* ctx = api::contextForQuery();
   if (!ctx || ctx->renderMode.mode != GL_SELECT) return;
   SelectState& s = ctx->renderMode.select;
   if (s.nameStackDepth == 0) return ctx->recordError(GL_INVALID_OPERATION);
+  pipeline::flushVertices(*ctx);
   if (s.hitFlag) s.writeHitRecord();
   s.nameStack[s.nameStackDepth - 1] = name;
 }

@@ -24,7 +24,23 @@ static void print_raster(const char *title) {
            title, valid, p[0], p[1], p[2], p[3], c[0], c[1], c[2], c[3], t[0], t[1], t[2], t[3], d);
 }
 
+static void triangle(void) {
+    glBegin(GL_TRIANGLES);
+    glVertex3f(-0.2f, -0.2f, -2.0f); glVertex3f(0.2f, -0.2f, -2.0f); glVertex3f(0.0f, 0.2f, -2.0f);
+    glEnd();
+}
+
 static void positions(void) {
+    /* primitives and pixel tokens interleaved: the order is kept */
+    triangle();
+    glRasterPos3f(0.1f, 0.1f, -2.0f);
+    triangle();
+    glBitmap(8, 8, 0, 0, 1, 1, bits);
+    triangle();
+    glDrawPixels(1, 1, GL_RGBA, GL_UNSIGNED_BYTE, bits);
+    triangle();
+    glCopyPixels(0, 0, 1, 1, GL_COLOR);
+    triangle();
     glColor4f(0.2f, 0.4f, 0.6f, 0.8f);
     glRasterPos3f(0.3f, -0.2f, -2.5f);
     glBitmap(8, 8, 1.0f, 2.0f, 1.5f, -2.25f, bits);

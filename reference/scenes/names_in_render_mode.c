@@ -5,7 +5,7 @@
  * (Mesa's FLUSH_VERTICES) shows in how the first quads of its row are split:
  * glPushName, glLoadName, glPopName outside GL_SELECT do not; glInitNames,
  * glPassThrough, glRenderMode, glSelectBuffer, glFeedbackBuffer,
- * glRasterPos and glBitmap do. */
+ * glRasterPos, glBitmap, and even empty glDrawPixels and glCopyPixels do. */
 #include <stddef.h>
 
 #include "scene.h"
@@ -37,6 +37,8 @@ static void command(int which)
     case 7: glFeedbackBuffer(64, GL_2D, feedback_buffer); break;
     case 8: glRasterPos2f(3.0f, 3.0f); break;
     case 9: glBitmap(0, 0, 0, 0, 1.0f, 1.0f, NULL); break;
+    case 10: glDrawPixels(0, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL); break;
+    case 11: glCopyPixels(0, 0, 0, 0, GL_COLOR); break;
     default: break;
     }
 }
@@ -46,13 +48,13 @@ int main(int argc, char **argv)
     scene_begin(argc, argv, 128, 128);
     scene_ortho_pixels();
     glShadeModel(GL_SMOOTH);
-    for (int row = 0; row < 10; ++row) {
-        float y = 2.0f + 12.5f * (float)row;
+    for (int row = 0; row < 12; ++row) {
+        float y = 2.0f + 10.5f * (float)row;
         glTranslatef(0, 0, 0); /* a state change: each row starts a new draw */
-        quad(4, y, 11);
+        quad(4, y, 9);
         command(row);
-        quad(40, y, 11);
-        quad(120, y, 11); /* crosses the right edge */
+        quad(40, y, 9);
+        quad(122, y, 9); /* crosses the right edge */
     }
     return scene_end();
 }

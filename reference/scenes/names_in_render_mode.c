@@ -3,9 +3,9 @@
  * of each row partly outside the view volume (so the whole draw is split as a
  * clipped draw, merge_quads_clipped). Whether each command ends the draw
  * (Mesa's FLUSH_VERTICES) shows in how the first quads of its row are split:
- * glPushName, glLoadName, glPopName outside GL_SELECT do not; glInitNames,
- * glPassThrough, glRenderMode, glSelectBuffer, glFeedbackBuffer,
- * glRasterPos, glBitmap, and even empty glDrawPixels and glCopyPixels do. */
+ * glPushName, glLoadName, glPopName, glInitNames and glPassThrough do not;
+ * glRenderMode, glSelectBuffer, glFeedbackBuffer, glRasterPos, glBitmap, and
+ * even empty glDrawPixels and glCopyPixels do (MESA_FACTS.md). */
 #include <stddef.h>
 
 #include "scene.h"

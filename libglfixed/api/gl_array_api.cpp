@@ -4,6 +4,7 @@
 #include <initializer_list>
 
 #include "api/api.h"
+#include "api/gl_select_api.h"
 #include "state/vertex_array_queries.h"
 
 using namespace glfixed;
@@ -133,6 +134,8 @@ GLAPI void APIENTRY glClientActiveTexture(GLenum texture) {
 GLAPI void APIENTRY glGetPointerv(GLenum pname, void** params) {
   Context* ctx = api::contextForQuery();
   if (!ctx || !params) return;
+  // GL_SELECTION_BUFFER_POINTER and GL_FEEDBACK_BUFFER_POINTER (§5.2, §5.3).
+  if (api::renderModePointer(*ctx, pname, params)) return;
   const ClientArray* a = clientArrayOfPointer(ctx->vertexArray, pname);
   if (!a) return ctx->recordError(GL_INVALID_ENUM);
   *params = const_cast<void*>(a->pointer);

@@ -128,6 +128,36 @@ bool queryState(Context& ctx, GLenum pname, StateValue& out) {
     case GL_UNPACK_SKIP_ROWS: out.set({double(ctx.pixelStore.unpackSkipRows)}); return true;
     case GL_ATTRIB_STACK_DEPTH: out.set({double(ctx.attribStack.depth())}); return true;
     case GL_MAX_ATTRIB_STACK_DEPTH: out.set({double(kMaxAttribStackDepth)}); return true;
+    case GL_CURRENT_RASTER_POSITION: {
+      const glm::vec4& p = ctx.rasterPos.position;
+      out.set({p.x, p.y, p.z, p.w});
+      return true;
+    }
+    case GL_CURRENT_RASTER_POSITION_VALID: out.set({double(ctx.rasterPos.valid)}); return true;
+    case GL_CURRENT_RASTER_DISTANCE: out.set({ctx.rasterPos.distance}); return true;
+    case GL_CURRENT_RASTER_COLOR: {
+      const glm::vec4& c = ctx.rasterPos.color;
+      out.set({c.r, c.g, c.b, c.a}, Kind::kNormalized);
+      return true;
+    }
+    case GL_CURRENT_RASTER_SECONDARY_COLOR: {
+      const glm::vec4& c = ctx.rasterPos.secondaryColor;
+      out.set({c.r, c.g, c.b, c.a}, Kind::kNormalized);
+      return true;
+    }
+    case GL_CURRENT_RASTER_TEXTURE_COORDS: {
+      const glm::vec4& t = ctx.rasterPos.texCoord;
+      out.set({t.x, t.y, t.z, t.w});
+      return true;
+    }
+    case GL_CURRENT_RASTER_INDEX: out.set({1.0}); return true;
+    // §5.2, §5.3 (tables 6.57, 6.58)
+    case GL_RENDER_MODE: out.set({double(ctx.renderMode.mode)}); return true;
+    case GL_NAME_STACK_DEPTH: out.set({double(ctx.renderMode.select.nameStackDepth)}); return true;
+    case GL_MAX_NAME_STACK_DEPTH: out.set({double(kMaxNameStackDepth)}); return true;
+    case GL_SELECTION_BUFFER_SIZE: out.set({double(ctx.renderMode.select.bufferSize)}); return true;
+    case GL_FEEDBACK_BUFFER_SIZE: out.set({double(ctx.renderMode.feedback.bufferSize)}); return true;
+    case GL_FEEDBACK_BUFFER_TYPE: out.set({double(ctx.renderMode.feedback.type)}); return true;
     default:
       break;
   }

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "primitive/primitive.h"
+#include "primitive/select_feedback.h"
 #include "state/context.h"
 #include "vertex/vertex_stage.h"
 
@@ -54,6 +55,12 @@ void drawBatch(Context& ctx, const VertexBatch& batch, primitive::PrimitiveState
   primitive::PrimitiveState ps = primitiveState(ctx, batch.mode, shaded.hasSecondary);
   ps.submission = submission;
   ps.constantPrimary = !vs.lighting && !colorIsVertexData;
+  // GL_SELECT and GL_FEEDBACK: transformed and clipped, never rasterized (§5.2, §5.3).
+  if (ctx.renderMode.mode == GL_SELECT)
+    return primitive::selectPrimitives(ps, shaded, ctx.framebuffer.height(), ctx.renderMode.select);
+  if (ctx.renderMode.mode == GL_FEEDBACK)
+    return primitive::feedbackPrimitives(ps, shaded, ctx.framebuffer.height(), ctx.current.texCoord[0],
+                                         ctx.renderMode.feedback);
   primitive::drawPrimitives(ps, shaded, ctx.framebuffer);
 }
 

@@ -52,6 +52,7 @@ const Group kGroups[] = {
     copied<&Context::accum, &AttribNode::accum>(GL_ACCUM_BUFFER_BIT),
     copied<&Context::colorBuffer, &AttribNode::colorBuffer>(GL_COLOR_BUFFER_BIT),
     copied<&Context::current, &AttribNode::current>(GL_CURRENT_BIT),
+    copied<&Context::rasterPos, &AttribNode::rasterPos>(GL_CURRENT_BIT),
     copied<&Context::depth, &AttribNode::depth>(GL_DEPTH_BUFFER_BIT),
     Group{GL_ENABLE_BIT, saveEnable, restoreEnable},
     copied<&Context::eval, &AttribNode::eval>(GL_EVAL_BIT),

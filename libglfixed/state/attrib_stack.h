@@ -11,6 +11,7 @@
 #include "state/capabilities.h"
 #include "state/eval_attrib.h"
 #include "state/lighting_attrib.h"
+#include "state/raster_pos.h"
 
 namespace glfixed {
 
@@ -29,6 +30,7 @@ struct AttribNode {
   AccumAttrib accum;
   ColorBufferAttrib colorBuffer;
   CurrentAttrib current;
+  RasterPosState rasterPos;  // GL_CURRENT_BIT too (table 6.5)
   DepthBufferAttrib depth;
   EnableAttrib enable;
   EvalAttrib eval;

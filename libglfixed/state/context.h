@@ -19,6 +19,8 @@
 #include "state/lighting_attrib.h"
 #include "state/matrix_stack.h"
 #include "state/vertex_array_attrib.h"
+#include "state/raster_pos.h"
+#include "state/render_mode.h"
 #include "vertex/light_constants.h"
 #include "vertex/vertex_stage.h"
 
@@ -72,6 +74,8 @@ class Context {
   EvalMaps evalMaps;  // in no attribute group (table 6.39)
   MatrixStack modelview{kMaxModelviewStackDepth};
   MatrixStack projection{kMaxProjectionStackDepth};
+  RasterPosState rasterPos;    // glRasterPos (§2.13); belongs to GL_CURRENT_BIT
+  RenderModeState renderMode;  // glRenderMode, selection, feedback (§5.2, §5.3)
 
   Framebuffer framebuffer;
   int requestedDepthBits;

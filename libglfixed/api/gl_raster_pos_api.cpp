@@ -1,0 +1,278 @@
+// The current raster position (GL 2.1 §2.13), and what glBitmap,
+// glDrawPixels and glCopyPixels do with it in GL_FEEDBACK and GL_SELECT
+// (§5.2, §5.3). Rasterizing bitmaps and pixel rectangles in GL_RENDER is not
+// implemented yet: those calls record GL_INVALID_OPERATION, as every
+// unimplemented command does.
+//
+// For fixed-function vertex processing Mesa computes the raster position in
+// plain C (main/rastpos.c, reached from st_RasterPos): float matrix products
+// summed left to right, a clip test against the six planes, ndc * scale +
+// translate unfused, w the clip w; an invalid position leaves the old values.
+#include <cmath>
+
+#include "api/api.h"
+#include "state/lighting_attrib.h"
+#include "vertex/vertex_stage.h"
+
+using namespace glfixed;
+
+namespace {
+
+// Mesa's TRANSFORM_POINT: each row summed left to right, rounded each step.
+glm::vec4 transformPoint(const glm::mat4& m, const glm::vec4& p) {
+  glm::vec4 q;
+  for (int r = 0; r < 4; ++r) {
+    float s = m[0][r] * p[0];
+    s = s + m[1][r] * p[1];
+    s = s + m[2][r] * p[2];
+    q[r] = s + m[3][r] * p[3];
+  }
+  return q;
+}
+
+void rasterPos(float x, float y, float z, float w) {
+  Context* ctx = api::contextFlushed();
+  if (!ctx) return;
+  RasterPosState& rp = ctx->rasterPos;
+  const glm::vec4 object(x, y, z, w);
+  const glm::vec4 eye = transformPoint(ctx->modelview.top(), object);
+  const glm::vec4 clip = transformPoint(ctx->projection.top(), eye);
+  if (clip.z > clip.w || clip.z < -clip.w || clip.x > clip.w || clip.x < -clip.w || clip.y > clip.w ||
+      clip.y < -clip.w) {
+    rp.valid = false;
+    return;
+  }
+  const float d = clip.w == 0.0f ? 1.0f : 1.0f / clip.w;
+  const ViewportAttrib& v = ctx->viewport;
+  const float halfWidth = 0.5f * static_cast<float>(v.width),
+              halfHeight = 0.5f * static_cast<float>(v.height);
+  const float n = static_cast<float>(api::clamp01(v.depthNear)),
+              f = static_cast<float>(api::clamp01(v.depthFar));
+  const float scale[3] = {halfWidth, halfHeight, static_cast<float>(0.5 * (double(f) - double(n)))};
+  const float translate[3] = {halfWidth + static_cast<float>(v.x), halfHeight + static_cast<float>(v.y),
+                              static_cast<float>(0.5 * (double(n) + double(f)))};
+  for (int i = 0; i < 3; ++i) {
+    const float ndc = clip[i] * d;
+    const float scaled = ndc * scale[i];
+    rp.position[i] = scaled + translate[i];
+  }
+  rp.position[3] = clip.w;
+  rp.distance = std::sqrt(eye.x * eye.x + eye.y * eye.y + eye.z * eye.z);
+  rp.texCoord = ctx->current.texCoord[0];
+  const vertex::VertexState& vs = ctx->validate();
+  if (vs.lighting) {
+    // Lit by the lighting stage (Mesa lights it in C: not bit-identical).
+    VertexBatch batch;
+    batch.reset(GL_POINTS, ctx->lighting.material);
+    batch.resizeVertices(1);
+    batch.position[0] = object;
+    batch.normal[0] = ctx->current.normal;
+    batch.color[0] = ctx->current.color;
+    ShadedVertices shaded;
+    vertex::shadeBatch(vs, batch, shaded);
+    rp.color = shaded.primary[kFront][0];
+    rp.secondaryColor = shaded.hasSecondary ? shaded.secondary[kFront][0] : glm::vec4(0, 0, 0, 1);
+  } else {
+    rp.color = ctx->current.color;
+    rp.secondaryColor = ctx->current.secondaryColor;
+  }
+  rp.valid = true;
+  if (ctx->renderMode.mode == GL_SELECT) ctx->renderMode.select.updateHitFlag(rp.position.z);
+}
+
+// GL_FEEDBACK: the token and the raster position as a vertex (§5.3).
+void feedbackRasterPos(Context& ctx, GLenum token) {
+  FeedbackState& f = ctx.renderMode.feedback;
+  const RasterPosState& rp = ctx.rasterPos;
+  f.token(static_cast<GLfloat>(token));
+  f.token(rp.position.x);
+  f.token(rp.position.y);
+  const GLenum type = f.type;
+  if (type != GL_2D) f.token(rp.position.z);
+  if (type == GL_4D_COLOR_TEXTURE) f.token(rp.position.w);
+  if (type == GL_3D_COLOR || type == GL_3D_COLOR_TEXTURE || type == GL_4D_COLOR_TEXTURE)
+    for (int k = 0; k < 4; ++k) f.token(rp.color[k]);
+  if (type == GL_3D_COLOR_TEXTURE || type == GL_4D_COLOR_TEXTURE)
+    for (int k = 0; k < 4; ++k) f.token(rp.texCoord[k]);
+}
+
+bool isDrawPixelsFormat(GLenum format) {
+  switch (format) {
+    case GL_COLOR_INDEX:
+    case GL_STENCIL_INDEX:
+    case GL_DEPTH_COMPONENT:
+    case GL_RED:
+    case GL_GREEN:
+    case GL_BLUE:
+    case GL_ALPHA:
+    case GL_RGB:
+    case GL_RGBA:
+    case GL_BGR:
+    case GL_BGRA:
+    case GL_LUMINANCE:
+    case GL_LUMINANCE_ALPHA: return true;
+    default: return false;
+  }
+}
+
+// GL 2.1 §3.6.4 and table 3.8: the error a format/type pair raises, if any.
+GLenum drawPixelsTypeError(const Context& ctx, GLenum format, GLenum type) {
+  if (!isDrawPixelsFormat(format)) return GL_INVALID_ENUM;
+  switch (type) {
+    case GL_UNSIGNED_BYTE:
+    case GL_BYTE:
+    case GL_UNSIGNED_SHORT:
+    case GL_SHORT:
+    case GL_UNSIGNED_INT:
+    case GL_INT:
+    case GL_FLOAT: break;
+    case GL_BITMAP:
+      if (format != GL_COLOR_INDEX && format != GL_STENCIL_INDEX) return GL_INVALID_ENUM;
+      break;
+    case GL_UNSIGNED_BYTE_3_3_2:
+    case GL_UNSIGNED_BYTE_2_3_3_REV:
+    case GL_UNSIGNED_SHORT_5_6_5:
+    case GL_UNSIGNED_SHORT_5_6_5_REV:
+      if (format != GL_RGB) return GL_INVALID_OPERATION;
+      break;
+    case GL_UNSIGNED_SHORT_4_4_4_4:
+    case GL_UNSIGNED_SHORT_4_4_4_4_REV:
+    case GL_UNSIGNED_SHORT_5_5_5_1:
+    case GL_UNSIGNED_SHORT_1_5_5_5_REV:
+    case GL_UNSIGNED_INT_8_8_8_8:
+    case GL_UNSIGNED_INT_8_8_8_8_REV:
+    case GL_UNSIGNED_INT_10_10_10_2:
+    case GL_UNSIGNED_INT_2_10_10_10_REV:
+      if (format != GL_RGBA && format != GL_BGRA) return GL_INVALID_OPERATION;
+      break;
+    default: return GL_INVALID_ENUM;
+  }
+  // §4.3.1 via §3.6.4: no stencil buffer here; depth only with a depth buffer.
+  if (format == GL_STENCIL_INDEX) return GL_INVALID_OPERATION;
+  if (format == GL_DEPTH_COMPONENT && ctx.framebuffer.depth.bits() == 0) return GL_INVALID_OPERATION;
+  return GL_NO_ERROR;
+}
+
+// After validation: GL_FEEDBACK writes the token, GL_SELECT does nothing
+// (GL 2.1 appendix B, corollary 6; Mesa alike), GL_RENDER is not implemented.
+// Returns false in GL_RENDER (after recording the error).
+bool pixelsInRenderMode(Context& ctx, GLenum token, bool drawsSomething) {
+  if (ctx.renderMode.mode == GL_RENDER) {
+    if (drawsSomething) {
+      ctx.recordError(GL_INVALID_OPERATION);  // rasterization not implemented yet
+      return false;
+    }
+    return true;
+  }
+  if (ctx.renderMode.mode == GL_FEEDBACK) feedbackRasterPos(ctx, token);
+  return true;
+}
+
+}  // namespace
+
+extern "C" {
+
+GLAPI void APIENTRY glBitmap(GLsizei width, GLsizei height, GLfloat xorig, GLfloat yorig, GLfloat xmove,
+                             GLfloat ymove, const GLubyte* bitmap) {
+  Context* ctx = api::contextFlushed();
+  if (!ctx) return;
+  if (width < 0 || height < 0) return ctx->recordError(GL_INVALID_VALUE);
+  if (!ctx->rasterPos.valid) return;
+  // An empty bitmap only moves the raster position, in every mode.
+  if (!pixelsInRenderMode(*ctx, GL_BITMAP_TOKEN, width > 0 && height > 0)) return;
+  ctx->rasterPos.position.x += xmove;
+  ctx->rasterPos.position.y += ymove;
+}
+
+GLAPI void APIENTRY glDrawPixels(GLsizei width, GLsizei height, GLenum format, GLenum type,
+                                 const void* pixels) {
+  Context* ctx = api::contextFlushed();
+  if (!ctx) return;
+  if (width < 0 || height < 0) return ctx->recordError(GL_INVALID_VALUE);
+  if (GLenum e = drawPixelsTypeError(*ctx, format, type)) return ctx->recordError(e);
+  if (!ctx->rasterPos.valid) return;
+  pixelsInRenderMode(*ctx, GL_DRAW_PIXEL_TOKEN, width > 0 && height > 0);
+}
+
+GLAPI void APIENTRY glCopyPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum type) {
+  Context* ctx = api::contextFlushed();
+  if (!ctx) return;
+  if (width < 0 || height < 0) return ctx->recordError(GL_INVALID_VALUE);
+  if (type != GL_COLOR && type != GL_DEPTH && type != GL_STENCIL) return ctx->recordError(GL_INVALID_ENUM);
+  if (type == GL_STENCIL || (type == GL_DEPTH && ctx->framebuffer.depth.bits() == 0))
+    return ctx->recordError(GL_INVALID_OPERATION);
+  if (!ctx->rasterPos.valid) return;
+  pixelsInRenderMode(*ctx, GL_COPY_PIXEL_TOKEN, width > 0 && height > 0);
+}
+
+}  // extern "C"
+
+// glRasterPos{234}{sifd}[v] (§2.13): missing z is 0, missing w is 1.
+extern "C" {
+
+GLAPI void APIENTRY glRasterPos2s(GLshort x, GLshort y) { rasterPos(float(x), float(y), 0.0f, 1.0f); }
+GLAPI void APIENTRY glRasterPos3s(GLshort x, GLshort y, GLshort z) {
+  rasterPos(float(x), float(y), float(z), 1.0f);
+}
+GLAPI void APIENTRY glRasterPos4s(GLshort x, GLshort y, GLshort z, GLshort w) {
+  rasterPos(float(x), float(y), float(z), float(w));
+}
+GLAPI void APIENTRY glRasterPos2sv(const GLshort* v) {
+  if (v) rasterPos(float(v[0]), float(v[1]), 0.0f, 1.0f);
+}
+GLAPI void APIENTRY glRasterPos3sv(const GLshort* v) {
+  if (v) rasterPos(float(v[0]), float(v[1]), float(v[2]), 1.0f);
+}
+GLAPI void APIENTRY glRasterPos4sv(const GLshort* v) {
+  if (v) rasterPos(float(v[0]), float(v[1]), float(v[2]), float(v[3]));
+}
+GLAPI void APIENTRY glRasterPos2i(GLint x, GLint y) { rasterPos(float(x), float(y), 0.0f, 1.0f); }
+GLAPI void APIENTRY glRasterPos3i(GLint x, GLint y, GLint z) {
+  rasterPos(float(x), float(y), float(z), 1.0f);
+}
+GLAPI void APIENTRY glRasterPos4i(GLint x, GLint y, GLint z, GLint w) {
+  rasterPos(float(x), float(y), float(z), float(w));
+}
+GLAPI void APIENTRY glRasterPos2iv(const GLint* v) {
+  if (v) rasterPos(float(v[0]), float(v[1]), 0.0f, 1.0f);
+}
+GLAPI void APIENTRY glRasterPos3iv(const GLint* v) {
+  if (v) rasterPos(float(v[0]), float(v[1]), float(v[2]), 1.0f);
+}
+GLAPI void APIENTRY glRasterPos4iv(const GLint* v) {
+  if (v) rasterPos(float(v[0]), float(v[1]), float(v[2]), float(v[3]));
+}
+GLAPI void APIENTRY glRasterPos2f(GLfloat x, GLfloat y) { rasterPos(float(x), float(y), 0.0f, 1.0f); }
+GLAPI void APIENTRY glRasterPos3f(GLfloat x, GLfloat y, GLfloat z) {
+  rasterPos(float(x), float(y), float(z), 1.0f);
+}
+GLAPI void APIENTRY glRasterPos4f(GLfloat x, GLfloat y, GLfloat z, GLfloat w) {
+  rasterPos(float(x), float(y), float(z), float(w));
+}
+GLAPI void APIENTRY glRasterPos2fv(const GLfloat* v) {
+  if (v) rasterPos(float(v[0]), float(v[1]), 0.0f, 1.0f);
+}
+GLAPI void APIENTRY glRasterPos3fv(const GLfloat* v) {
+  if (v) rasterPos(float(v[0]), float(v[1]), float(v[2]), 1.0f);
+}
+GLAPI void APIENTRY glRasterPos4fv(const GLfloat* v) {
+  if (v) rasterPos(float(v[0]), float(v[1]), float(v[2]), float(v[3]));
+}
+GLAPI void APIENTRY glRasterPos2d(GLdouble x, GLdouble y) { rasterPos(float(x), float(y), 0.0f, 1.0f); }
+GLAPI void APIENTRY glRasterPos3d(GLdouble x, GLdouble y, GLdouble z) {
+  rasterPos(float(x), float(y), float(z), 1.0f);
+}
+GLAPI void APIENTRY glRasterPos4d(GLdouble x, GLdouble y, GLdouble z, GLdouble w) {
+  rasterPos(float(x), float(y), float(z), float(w));
+}
+GLAPI void APIENTRY glRasterPos2dv(const GLdouble* v) {
+  if (v) rasterPos(float(v[0]), float(v[1]), 0.0f, 1.0f);
+}
+GLAPI void APIENTRY glRasterPos3dv(const GLdouble* v) {
+  if (v) rasterPos(float(v[0]), float(v[1]), float(v[2]), 1.0f);
+}
+GLAPI void APIENTRY glRasterPos4dv(const GLdouble* v) {
+  if (v) rasterPos(float(v[0]), float(v[1]), float(v[2]), float(v[3]));
+}
+
+}  // extern "C"

@@ -1,0 +1,61 @@
+// Every float operation here must round as Mesa's does.
+#pragma GCC optimize("fp-contract=off")
+
+#include "primitive/select_feedback.h"
+#include "primitive/unrasterized.h"
+
+namespace glfixed::primitive {
+
+namespace {
+
+class FeedbackSink final : public PrimitiveSink {
+ public:
+  FeedbackSink(FeedbackState& feedback, int framebufferHeight, const glm::vec4& texCoord)
+      : fb_(feedback), height_(static_cast<float>(framebufferHeight)), texCoord_(texCoord) {}
+
+  void point(const ClipVertex& v) override {
+    fb_.token(static_cast<GLfloat>(GL_POINT_TOKEN));
+    vertex(v, kSinkFrontColor);
+  }
+  void line(const ClipVertex& v0, const ClipVertex& v1) override {
+    fb_.token(static_cast<GLfloat>(GL_LINE_TOKEN));
+    vertex(v0, kSinkFrontColor);
+    vertex(v1, kSinkFrontColor);
+  }
+  void triangle(const ClipVertex& v0, const ClipVertex& v1, const ClipVertex& v2, int color) override {
+    fb_.token(static_cast<GLfloat>(GL_POLYGON_TOKEN));
+    fb_.token(3.0f);
+    vertex(v0, color);
+    vertex(v1, color);
+    vertex(v2, color);
+  }
+
+ private:
+  // st_cb_feedback.c, feedback_vertex: the draw module's window y is down
+  // from the top (viewport.h), so y = height - y; w = 1 / (1/w), in float.
+  void vertex(const ClipVertex& v, int color) {
+    fb_.token(v.window[0]);
+    fb_.token(height_ - v.window[1]);
+    const GLenum type = fb_.type;
+    if (type != GL_2D) fb_.token(v.window[2]);
+    if (type == GL_4D_COLOR_TEXTURE) fb_.token(1.0f / v.window[3]);
+    if (type == GL_3D_COLOR || type == GL_3D_COLOR_TEXTURE || type == GL_4D_COLOR_TEXTURE)
+      for (int k = 0; k < 4; ++k) fb_.token(v.attr[color + k]);
+    if (type == GL_3D_COLOR_TEXTURE || type == GL_4D_COLOR_TEXTURE)
+      for (int k = 0; k < 4; ++k) fb_.token(texCoord_[k]);
+  }
+
+  FeedbackState& fb_;
+  float height_;
+  glm::vec4 texCoord_;
+};
+
+}  // namespace
+
+void feedbackPrimitives(const PrimitiveState& state, const ShadedVertices& vertices, int framebufferHeight,
+                        const glm::vec4& texCoord, FeedbackState& feedback) {
+  FeedbackSink sink(feedback, framebufferHeight, texCoord);
+  drawUnrasterized(state, vertices, framebufferHeight, sink);
+}
+
+}  // namespace glfixed::primitive

@@ -1,0 +1,199 @@
+// Every float operation here must round exactly as Mesa's draw module does:
+// forbid contracting a * b + c into a fused multiply-add.
+#pragma GCC optimize("fp-contract=off")
+
+#include "primitive/unrasterized.h"
+
+#include <cmath>
+#include <vector>
+
+#include "primitive/assemble.h"
+#include "primitive/cull.h"
+#include "primitive/viewport.h"
+#include "state/lighting_attrib.h"
+
+namespace glfixed::primitive {
+
+namespace {
+
+constexpr int kAttribCount = 8;  // front and back primary colours
+
+struct Batch {
+  const PrimitiveState& state;
+  PrimitiveSink& sink;
+  ViewportTransform viewport;
+  FaceRule face;
+  bool twoSided;
+};
+
+void loadVertices(const ShadedVertices& in, uint32_t n, const ViewportTransform& viewport,
+                  std::vector<ClipVertex>& out, std::vector<uint32_t>& masks) {
+  out.resize(n);
+  masks.resize(n);
+  for (uint32_t i = 0; i < n; ++i) {
+    ClipVertex& v = out[i];
+    v.clip = in.clip[i];
+    masks[i] = clipMask(v.clip);
+    viewport.windowFromClip(v.clip, v.window);
+    const glm::vec4& front = in.primary[kFront][i];
+    const glm::vec4& back = in.hasBack ? in.primary[kBack][i] : front;
+    for (int k = 0; k < 4; ++k) {
+      v.attr[kSinkFrontColor + k] = front[k];
+      v.attr[kSinkBackColor + k] = back[k];
+    }
+  }
+}
+
+// After the clipper: the draw module's cull stage, then its two-sided colour
+// choice, by the sign of the same float determinant (y down, cull.h).
+void emitTriangle(const Batch& b, const ClipVertex& v0, const ClipVertex& v1, const ClipVertex& v2) {
+  if (drawModuleCulls(b.face, v0.window, v1.window, v2.window)) return;
+  int color = kSinkFrontColor;
+  if (b.twoSided) {
+    const float det = (v0.window[0] - v2.window[0]) * (v1.window[1] - v2.window[1]) -
+                      (v0.window[1] - v2.window[1]) * (v1.window[0] - v2.window[0]);
+    if (det != 0.0f && !b.face.isFront(det < 0.0f ? 1 : -1)) color = kSinkBackColor;
+  }
+  b.sink.triangle(v0, v1, v2, color);
+}
+
+// The clipped polygon as the clipper emits it (draw_pipe_clip.c, emit_poly):
+// a fan around its first vertex; under GL_FLAT the first vertex is first
+// given the provoking vertex's colours.
+void emitClippedPolygon(const Batch& b, const ClippedPolygon& poly, const ClipVertex& provoking) {
+  ClipVertex firstCopy;
+  const ClipVertex* first = poly.vertex[0];
+  if (b.state.flat && first != &provoking) {
+    firstCopy = *first;
+    for (int k = 0; k < kAttribCount; ++k) firstCopy.attr[k] = provoking.attr[k];
+    first = &firstCopy;
+  }
+  for (int i = 2; i < poly.count; ++i) {
+    if (b.state.firstVertexConvention)
+      emitTriangle(b, *first, *poly.vertex[i - 1], *poly.vertex[i]);
+    else
+      emitTriangle(b, *poly.vertex[i - 1], *poly.vertex[i], *first);
+  }
+}
+
+void drawTriangles(const Batch& b, GLenum mode, uint32_t n, const std::vector<ClipVertex>& v,
+                   const std::vector<uint32_t>& masks) {
+  static thread_local std::vector<Triangle> triangles;
+  static thread_local ClippedPolygon polygon;
+  assembleTriangles(mode, n, b.state.firstVertexConvention, b.state.flat, DecomposePath::kPipeline,
+                    triangles);
+  const int provokingSlot = primitive::provokingSlot(b.state.firstVertexConvention);
+  for (const Triangle& t : triangles) {
+    const uint32_t m0 = masks[t[0]], m1 = masks[t[1]], m2 = masks[t[2]];
+    if ((m0 | m1 | m2) == 0) {
+      emitTriangle(b, v[t[0]], v[t[1]], v[t[2]]);
+    } else if ((m0 & m1 & m2) == 0) {
+      if (clipTriangle(v[t[0]], v[t[1]], v[t[2]], m0 | m1 | m2, kAttribCount, b.viewport, polygon))
+        emitClippedPolygon(b, polygon, v[t[provokingSlot]]);
+    }
+  }
+}
+
+void emitLine(const Batch& b, const ClipVertex& v0, const ClipVertex& v1, uint32_t m0, uint32_t m1) {
+  if ((m0 | m1) == 0) {
+    b.sink.line(v0, v1);
+    return;
+  }
+  if ((m0 & m1) != 0) return;
+  ClipVertex made[2];
+  const ClipVertex *e0, *e1;
+  if (!clipLine(v0, v1, m0 | m1, kAttribCount, b.viewport, made, &e0, &e1)) return;
+  // GL_FLAT: a clipped end takes the provoking vertex's colours.
+  if (b.state.flat) {
+    const ClipVertex& provoking = b.state.firstVertexConvention ? v0 : v1;
+    const bool clipped[2] = {m0 != 0, m1 != 0};
+    for (int i = 0; i < 2; ++i)
+      if (clipped[i])
+        for (int k = 0; k < kAttribCount; ++k) made[i].attr[k] = provoking.attr[k];
+  }
+  b.sink.line(*e0, *e1);
+}
+
+void drawLines(const Batch& b, GLenum mode, uint32_t n, const std::vector<ClipVertex>& v,
+               const std::vector<uint32_t>& masks) {
+  auto line = [&](uint32_t i, uint32_t j) { emitLine(b, v[i], v[j], masks[i], masks[j]); };
+  switch (mode) {
+    case GL_LINES:
+      for (uint32_t i = 1; i < n; i += 2) line(i - 1, i);
+      break;
+    case GL_LINE_STRIP:
+      for (uint32_t i = 1; i < n; ++i) line(i - 1, i);
+      break;
+    default:  // GL_LINE_LOOP: the closing segment last
+      for (uint32_t i = 1; i < n; ++i) line(i - 1, i);
+      if (n >= 2) line(n - 1, 0);
+      break;
+  }
+}
+
+}  // namespace
+
+bool clipLine(const ClipVertex& v0, const ClipVertex& v1, uint32_t planes, int attribCount,
+              const ViewportTransform& viewport, ClipVertex made[2], const ClipVertex** out0,
+              const ClipVertex** out1) {
+  float t0 = 0.0f, t1 = 0.0f;
+  while (planes != 0) {
+    const int plane = __builtin_ctz(planes);
+    planes &= planes - 1;
+    const float dp0 = distanceToPlane(plane, v0.clip);
+    const float dp1 = distanceToPlane(plane, v1.clip);
+    if (!std::isfinite(dp0) || !std::isfinite(dp1)) return false;
+    if (dp1 < 0.0f) {
+      const float t = dp1 / (dp1 - dp0);
+      if (t > t1) t1 = t;
+    }
+    if (dp0 < 0.0f) {
+      const float t = dp0 / (dp0 - dp1);
+      if (t > t0) t0 = t;
+    }
+    if (t0 + t1 >= 1.0f) return false;
+  }
+  *out0 = &v0;
+  *out1 = &v1;
+  if (clipMask(v0.clip) != 0) {
+    interpolateClipVertex(v0, v1, t0, attribCount, viewport, made[0]);
+    *out0 = &made[0];
+  }
+  if (clipMask(v1.clip) != 0) {
+    interpolateClipVertex(v1, v0, t1, attribCount, viewport, made[1]);
+    *out1 = &made[1];
+  }
+  return true;
+}
+
+void drawUnrasterized(const PrimitiveState& state, const ShadedVertices& vertices, int framebufferHeight,
+                      PrimitiveSink& sink) {
+  const uint32_t n = trimVertexCount(state.mode, static_cast<uint32_t>(vertices.size()));
+  if (n == 0) return;
+  Batch b{state, sink,
+          ViewportTransform::make(state.viewportX, state.viewportY, state.viewportWidth, state.viewportHeight,
+                                  state.depthNear, state.depthFar, framebufferHeight),
+          FaceRule{state.cullFace, state.cullFaceMode, state.frontFace}, vertices.hasBack};
+
+  static thread_local std::vector<ClipVertex> clipVertices;
+  static thread_local std::vector<uint32_t> masks;
+  loadVertices(vertices, n, b.viewport, clipVertices, masks);
+
+  GLenum mode = state.mode;
+  using Submission = PrimitiveState::Submission;
+  if ((state.submission == Submission::kBeginEnd || state.submission == Submission::kDisplayList) && n == 3 &&
+      (mode == GL_TRIANGLE_STRIP || mode == GL_TRIANGLE_FAN))
+    mode = GL_TRIANGLES;
+  switch (mode) {
+    case GL_POINTS:
+      for (uint32_t i = 0; i < n; ++i)
+        if (masks[i] == 0) sink.point(clipVertices[i]);
+      break;
+    case GL_LINES:
+    case GL_LINE_STRIP:
+    case GL_LINE_LOOP: drawLines(b, mode, n, clipVertices, masks); break;
+    default: drawTriangles(b, mode, n, clipVertices, masks); break;
+  }
+}
+
+}  // namespace glfixed::primitive

@@ -46,8 +46,11 @@ void restoreLighting(Context& c, const AttribNode& n) {
   c.markDirty(kDirtyLighting);  // light positions restore as stored, in eye space
 }
 
-// The table, in Mesa's order of restoration (main/attrib.c); GL_EVAL_BIT and
-// GL_LIST_BIT come with the evaluators and display lists.
+// The table, in Mesa's order of restoration (main/attrib.c). GL_EVAL_BIT and
+// GL_LIST_BIT come with the evaluators and display lists: a member in
+// AttribNode and, after GL_ENABLE_BIT and GL_LIGHTING_BIT respectively,
+//   copied<&Context::eval, &AttribNode::eval>(GL_EVAL_BIT),
+//   copied<&Context::list, &AttribNode::list>(GL_LIST_BIT),
 const Group kGroups[] = {
     copied<&Context::accum, &AttribNode::accum>(GL_ACCUM_BUFFER_BIT),
     copied<&Context::colorBuffer, &AttribNode::colorBuffer>(GL_COLOR_BUFFER_BIT),

@@ -37,6 +37,100 @@ struct StateValue {
 
 bool isNormalizedLightingQuery(GLenum pname) { return pname == GL_LIGHT_MODEL_AMBIENT; }
 
+// The state of the groups whose stages come later (state/attrib_groups.h and
+// the held parts of attribs.h): their initial values, or what glPopAttrib
+// gave back.
+bool queryHeldState(Context& ctx, GLenum pname, StateValue& out) {
+  const ColorBufferAttrib& cb = ctx.colorBuffer;
+  const StencilAttrib::Face& front = ctx.stencil.face[0];
+  const StencilAttrib::Face& back = ctx.stencil.face[1];
+  switch (pname) {
+    case GL_FOG_MODE: out.set({double(ctx.fog.mode)}); return true;
+    case GL_FOG_DENSITY: out.set({ctx.fog.density}); return true;
+    case GL_FOG_START: out.set({ctx.fog.start}); return true;
+    case GL_FOG_END: out.set({ctx.fog.end}); return true;
+    case GL_FOG_INDEX: out.set({ctx.fog.index}); return true;
+    case GL_FOG_COLOR: {
+      const glm::vec4& c = ctx.fog.color;
+      out.set({c.r, c.g, c.b, c.a}, Kind::kNormalized);
+      return true;
+    }
+    case GL_FOG_COORD_SRC: out.set({double(ctx.fog.coordSrc)}); return true;
+    case GL_LINE_WIDTH: out.set({ctx.line.width}); return true;
+    case GL_LINE_STIPPLE_PATTERN: out.set({double(ctx.line.stipplePattern)}); return true;
+    case GL_LINE_STIPPLE_REPEAT: out.set({double(ctx.line.stippleRepeat)}); return true;
+    case GL_POINT_SIZE: out.set({ctx.point.size}); return true;
+    case GL_POINT_SIZE_MIN: out.set({ctx.point.sizeMin}); return true;
+    case GL_POINT_FADE_THRESHOLD_SIZE: out.set({ctx.point.fadeThresholdSize}); return true;
+    case GL_POINT_DISTANCE_ATTENUATION: {
+      const glm::vec3& a = ctx.point.distanceAttenuation;
+      out.set({a.x, a.y, a.z});
+      return true;
+    }
+    case GL_POINT_SPRITE_COORD_ORIGIN: out.set({double(ctx.point.spriteCoordOrigin)}); return true;
+    case GL_SCISSOR_BOX:
+      out.set({double(ctx.scissor.x), double(ctx.scissor.y), double(ctx.scissor.width),
+               double(ctx.scissor.height)});
+      return true;
+    case GL_STENCIL_FUNC: out.set({double(front.func)}); return true;
+    case GL_STENCIL_REF: out.set({double(front.ref)}); return true;
+    case GL_STENCIL_FAIL: out.set({double(front.fail)}); return true;
+    case GL_STENCIL_PASS_DEPTH_FAIL: out.set({double(front.depthFail)}); return true;
+    case GL_STENCIL_PASS_DEPTH_PASS: out.set({double(front.depthPass)}); return true;
+    case GL_STENCIL_BACK_FUNC: out.set({double(back.func)}); return true;
+    case GL_STENCIL_BACK_REF: out.set({double(back.ref)}); return true;
+    case GL_STENCIL_BACK_FAIL: out.set({double(back.fail)}); return true;
+    case GL_STENCIL_BACK_PASS_DEPTH_FAIL: out.set({double(back.depthFail)}); return true;
+    case GL_STENCIL_BACK_PASS_DEPTH_PASS: out.set({double(back.depthPass)}); return true;
+    case GL_STENCIL_CLEAR_VALUE: out.set({double(ctx.stencil.clearValue)}); return true;
+    case GL_ACCUM_CLEAR_VALUE: {
+      const glm::vec4& c = ctx.accum.clearValue;
+      out.set({c.r, c.g, c.b, c.a}, Kind::kNormalized);
+      return true;
+    }
+    case GL_ALPHA_TEST_FUNC: out.set({double(cb.alphaFunc)}); return true;
+    case GL_ALPHA_TEST_REF: out.set({cb.alphaRef}, Kind::kNormalized); return true;
+    case GL_BLEND_SRC_RGB: out.set({double(cb.blendSrcRGB)}); return true;
+    case GL_BLEND_DST_RGB: out.set({double(cb.blendDstRGB)}); return true;
+    case GL_BLEND_SRC_ALPHA: out.set({double(cb.blendSrcAlpha)}); return true;
+    case GL_BLEND_DST_ALPHA: out.set({double(cb.blendDstAlpha)}); return true;
+    case GL_BLEND_EQUATION_RGB: out.set({double(cb.blendEquationRGB)}); return true;
+    case GL_BLEND_EQUATION_ALPHA: out.set({double(cb.blendEquationAlpha)}); return true;
+    case GL_BLEND_COLOR: {
+      const glm::vec4& c = cb.blendColor;
+      out.set({c.r, c.g, c.b, c.a}, Kind::kNormalized);
+      return true;
+    }
+    case GL_LOGIC_OP_MODE: out.set({double(cb.logicOpMode)}); return true;
+    case GL_DRAW_BUFFER: out.set({double(cb.drawBuffer)}); return true;
+    case GL_INDEX_CLEAR_VALUE: out.set({cb.clearIndex}); return true;
+    case GL_POLYGON_MODE: out.set({double(ctx.polygon.frontMode), double(ctx.polygon.backMode)}); return true;
+    case GL_POLYGON_OFFSET_FACTOR: out.set({ctx.polygon.offsetFactor}); return true;
+    case GL_POLYGON_OFFSET_UNITS: out.set({ctx.polygon.offsetUnits}); return true;
+    case GL_READ_BUFFER: out.set({double(ctx.pixelMode.readBuffer)}); return true;
+    case GL_MAP_COLOR: out.set({double(ctx.pixelMode.mapColor)}); return true;
+    case GL_MAP_STENCIL: out.set({double(ctx.pixelMode.mapStencil)}); return true;
+    case GL_INDEX_SHIFT: out.set({double(ctx.pixelMode.indexShift)}); return true;
+    case GL_INDEX_OFFSET: out.set({double(ctx.pixelMode.indexOffset)}); return true;
+    case GL_RED_SCALE: out.set({ctx.pixelMode.scale.r}); return true;
+    case GL_GREEN_SCALE: out.set({ctx.pixelMode.scale.g}); return true;
+    case GL_BLUE_SCALE: out.set({ctx.pixelMode.scale.b}); return true;
+    case GL_ALPHA_SCALE: out.set({ctx.pixelMode.scale.a}); return true;
+    case GL_RED_BIAS: out.set({ctx.pixelMode.bias.r}); return true;
+    case GL_GREEN_BIAS: out.set({ctx.pixelMode.bias.g}); return true;
+    case GL_BLUE_BIAS: out.set({ctx.pixelMode.bias.b}); return true;
+    case GL_ALPHA_BIAS: out.set({ctx.pixelMode.bias.a}); return true;
+    case GL_DEPTH_SCALE: out.set({ctx.pixelMode.depthScale}); return true;
+    case GL_DEPTH_BIAS: out.set({ctx.pixelMode.depthBias}); return true;
+    case GL_ZOOM_X: out.set({ctx.pixelMode.zoomX}); return true;
+    case GL_ZOOM_Y: out.set({ctx.pixelMode.zoomY}); return true;
+    case GL_ACTIVE_TEXTURE: out.set({double(ctx.texture.activeTexture)}); return true;
+    case GL_SAMPLE_COVERAGE_VALUE: out.set({ctx.multisample.sampleCoverageValue}); return true;
+    case GL_SAMPLE_COVERAGE_INVERT: out.set({double(ctx.multisample.sampleCoverageInvert)}); return true;
+    default: return false;
+  }
+}
+
 // False: not a pname this library knows (GL_INVALID_ENUM).
 bool queryState(Context& ctx, GLenum pname, StateValue& out) {
   const Framebuffer& fb = ctx.framebuffer;
@@ -161,6 +255,7 @@ bool queryState(Context& ctx, GLenum pname, StateValue& out) {
     default:
       break;
   }
+  if (queryHeldState(ctx, pname, out)) return true;
   // Every capability's flag is a boolean query of the same name (§6.1.1).
   if (const Capability* c = findCapability(pname); c) {
     out.set({double(c->flag(ctx))});

@@ -46,8 +46,9 @@ void restoreLighting(Context& c, const AttribNode& n) {
   c.markDirty(kDirtyLighting);  // light positions restore as stored, in eye space
 }
 
-// The table, in Mesa's order of restoration (main/attrib.c); GL_LIST_BIT
-// comes with the display lists.
+// The table, in Mesa's order of restoration (main/attrib.c). GL_LIST_BIT
+// comes with the display lists: a member in AttribNode and, after
+// GL_LIGHTING_BIT, copied<&Context::list, &AttribNode::list>(GL_LIST_BIT).
 const Group kGroups[] = {
     copied<&Context::accum, &AttribNode::accum>(GL_ACCUM_BUFFER_BIT),
     copied<&Context::colorBuffer, &AttribNode::colorBuffer>(GL_COLOR_BUFFER_BIT),

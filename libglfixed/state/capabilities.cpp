@@ -1,5 +1,7 @@
 #include "state/capabilities.h"
 
+#include <iterator>
+
 #include "state/context.h"
 
 namespace glfixed {
@@ -40,7 +42,7 @@ constexpr Capability entry(GLenum cap, bool& (*flag)(Context&), GLbitfield group
   return Capability{cap, flag, groups, dirty, settable, perUnit};
 }
 
-const std::array<Capability, kCapabilityCount> kCapabilities = {{
+constexpr Capability kTable[] = {
     entry(GL_DEPTH_TEST, field<&Context::depth, &DepthBufferAttrib::test>, GL_DEPTH_BUFFER_BIT, 0, kSettable),
     entry(GL_CULL_FACE, field<&Context::polygon, &PolygonAttrib::cullFace>, GL_POLYGON_BIT, 0, kSettable),
     entry(GL_DITHER, field<&Context::colorBuffer, &ColorBufferAttrib::dither>, GL_COLOR_BUFFER_BIT, 0,
@@ -130,7 +132,16 @@ const std::array<Capability, kCapabilityCount> kCapabilities = {{
     entry(GL_TEXTURE_GEN_T, textureUnit<&TextureUnitEnables::genT>, GL_TEXTURE_BIT, 0, kHeld, true),
     entry(GL_TEXTURE_GEN_R, textureUnit<&TextureUnitEnables::genR>, GL_TEXTURE_BIT, 0, kHeld, true),
     entry(GL_TEXTURE_GEN_Q, textureUnit<&TextureUnitEnables::genQ>, GL_TEXTURE_BIT, 0, kHeld, true),
-}};
+};
+// kCapabilityCount (capabilities.h) sizes EnableAttrib: it must be the table's size.
+static_assert(std::size(kTable) == kCapabilityCount, "kCapabilityCount must count kTable's entries");
+
+constexpr std::array<Capability, kCapabilityCount> makeArray() {
+  std::array<Capability, kCapabilityCount> a{};
+  for (int i = 0; i < kCapabilityCount; ++i) a[i] = kTable[i];
+  return a;
+}
+constexpr std::array<Capability, kCapabilityCount> kCapabilities = makeArray();
 
 }  // namespace
 

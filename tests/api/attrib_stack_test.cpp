@@ -441,3 +441,92 @@ TEST_F(AttribStackTest, EachCapabilityHasItsOwnFlag) {
 
 }  // namespace
 }  // namespace glfx_test
+
+namespace glfx_test {
+namespace {
+
+// The held groups' state reads back its initial value (GL 2.1 tables 6.x),
+// before and after a push and pop of every group.
+TEST_F(AttribStackTest, HeldStateHasItsInitialValues) {
+  struct Value {
+    GLenum pname;
+    std::vector<double> value;
+  };
+  const Value values[] = {
+      {GL_FOG_MODE, {GL_EXP}},
+      {GL_FOG_DENSITY, {1}},
+      {GL_FOG_START, {0}},
+      {GL_FOG_END, {1}},
+      {GL_FOG_INDEX, {0}},
+      {GL_FOG_COLOR, {0, 0, 0, 0}},
+      {GL_FOG_COORD_SRC, {GL_FRAGMENT_DEPTH}},
+      {GL_LINE_WIDTH, {1}},
+      {GL_LINE_STIPPLE_PATTERN, {0xffff}},
+      {GL_LINE_STIPPLE_REPEAT, {1}},
+      {GL_POINT_SIZE, {1}},
+      {GL_POINT_SIZE_MIN, {0}},
+      {GL_POINT_FADE_THRESHOLD_SIZE, {1}},
+      {GL_POINT_DISTANCE_ATTENUATION, {1, 0, 0}},
+      {GL_POINT_SPRITE_COORD_ORIGIN, {GL_UPPER_LEFT}},
+      {GL_SCISSOR_BOX, {0, 0, kWidth, kHeight}},
+      {GL_STENCIL_FUNC, {GL_ALWAYS}},
+      {GL_STENCIL_REF, {0}},
+      {GL_STENCIL_FAIL, {GL_KEEP}},
+      {GL_STENCIL_PASS_DEPTH_FAIL, {GL_KEEP}},
+      {GL_STENCIL_PASS_DEPTH_PASS, {GL_KEEP}},
+      {GL_STENCIL_BACK_FUNC, {GL_ALWAYS}},
+      {GL_STENCIL_BACK_REF, {0}},
+      {GL_STENCIL_BACK_FAIL, {GL_KEEP}},
+      {GL_STENCIL_BACK_PASS_DEPTH_FAIL, {GL_KEEP}},
+      {GL_STENCIL_BACK_PASS_DEPTH_PASS, {GL_KEEP}},
+      {GL_STENCIL_CLEAR_VALUE, {0}},
+      {GL_ACCUM_CLEAR_VALUE, {0, 0, 0, 0}},
+      {GL_ALPHA_TEST_FUNC, {GL_ALWAYS}},
+      {GL_ALPHA_TEST_REF, {0}},
+      {GL_BLEND_SRC_RGB, {GL_ONE}},
+      {GL_BLEND_DST_RGB, {GL_ZERO}},
+      {GL_BLEND_SRC_ALPHA, {GL_ONE}},
+      {GL_BLEND_DST_ALPHA, {GL_ZERO}},
+      {GL_BLEND_EQUATION_RGB, {GL_FUNC_ADD}},
+      {GL_BLEND_EQUATION_ALPHA, {GL_FUNC_ADD}},
+      {GL_BLEND_COLOR, {0, 0, 0, 0}},
+      {GL_LOGIC_OP_MODE, {GL_COPY}},
+      {GL_DRAW_BUFFER, {GL_FRONT}},
+      {GL_READ_BUFFER, {GL_FRONT}},
+      {GL_INDEX_CLEAR_VALUE, {0}},
+      {GL_POLYGON_MODE, {GL_FILL, GL_FILL}},
+      {GL_POLYGON_OFFSET_FACTOR, {0}},
+      {GL_POLYGON_OFFSET_UNITS, {0}},
+      {GL_MAP_COLOR, {0}},
+      {GL_MAP_STENCIL, {0}},
+      {GL_INDEX_SHIFT, {0}},
+      {GL_INDEX_OFFSET, {0}},
+      {GL_RED_SCALE, {1}},
+      {GL_GREEN_SCALE, {1}},
+      {GL_BLUE_SCALE, {1}},
+      {GL_ALPHA_SCALE, {1}},
+      {GL_RED_BIAS, {0}},
+      {GL_GREEN_BIAS, {0}},
+      {GL_BLUE_BIAS, {0}},
+      {GL_ALPHA_BIAS, {0}},
+      {GL_DEPTH_SCALE, {1}},
+      {GL_DEPTH_BIAS, {0}},
+      {GL_ZOOM_X, {1}},
+      {GL_ZOOM_Y, {1}},
+      {GL_ACTIVE_TEXTURE, {GL_TEXTURE0}},
+      {GL_SAMPLE_COVERAGE_VALUE, {1}},
+      {GL_SAMPLE_COVERAGE_INVERT, {0}},
+  };
+  for (int pass = 0; pass < 2; ++pass) {
+    for (const Value& v : values) {
+      SCOPED_TRACE(::testing::Message() << "pname 0x" << std::hex << v.pname << (pass ? " after a pop" : ""));
+      EXPECT_EQ(Doubles(v.pname, int(v.value.size())), v.value);
+      EXPECT_NO_GL_ERROR();
+    }
+    glPushAttrib(GL_ALL_ATTRIB_BITS);
+    glPopAttrib();
+  }
+}
+
+}  // namespace
+}  // namespace glfx_test

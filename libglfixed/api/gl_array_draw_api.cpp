@@ -165,6 +165,83 @@ void arrayVertex(const pipeline::ArrayView& a, uint32_t i) {
   }
 }
 
+void arraySecondaryColor(const pipeline::ArrayView& a, uint32_t i) {
+  const uint8_t* p = a.elementBytes(i);
+  auto none = [](const void*) {};
+  switch (a.type) {
+    case GL_BYTE: return colorAs<GLbyte>(p, 3, glSecondaryColor3bv, none);
+    case GL_UNSIGNED_BYTE: return colorAs<GLubyte>(p, 3, glSecondaryColor3ubv, none);
+    case GL_SHORT: return colorAs<GLshort>(p, 3, glSecondaryColor3sv, none);
+    case GL_UNSIGNED_SHORT: return colorAs<GLushort>(p, 3, glSecondaryColor3usv, none);
+    case GL_INT: return colorAs<GLint>(p, 3, glSecondaryColor3iv, none);
+    case GL_UNSIGNED_INT: return colorAs<GLuint>(p, 3, glSecondaryColor3uiv, none);
+    case GL_FLOAT: return colorAs<GLfloat>(p, 3, glSecondaryColor3fv, none);
+    case GL_DOUBLE: return colorAs<GLdouble>(p, 3, glSecondaryColor3dv, none);
+    default: return;
+  }
+}
+
+// The scalar arrays: fog coordinate, colour index, edge flag.
+template <typename T, typename F>
+void scalarAs(const uint8_t* bytes, F set) {
+  T v[4];
+  readComponents(bytes, 1, v);
+  set(v);
+}
+
+void arrayFogCoord(const pipeline::ArrayView& a, uint32_t i) {
+  const uint8_t* p = a.elementBytes(i);
+  if (a.type == GL_DOUBLE) return scalarAs<GLdouble>(p, glFogCoorddv);
+  return scalarAs<GLfloat>(p, glFogCoordfv);
+}
+
+void arrayIndex(const pipeline::ArrayView& a, uint32_t i) {
+  const uint8_t* p = a.elementBytes(i);
+  switch (a.type) {
+    case GL_UNSIGNED_BYTE: return scalarAs<GLubyte>(p, glIndexubv);
+    case GL_SHORT: return scalarAs<GLshort>(p, glIndexsv);
+    case GL_INT: return scalarAs<GLint>(p, glIndexiv);
+    case GL_FLOAT: return scalarAs<GLfloat>(p, glIndexfv);
+    case GL_DOUBLE: return scalarAs<GLdouble>(p, glIndexdv);
+    default: return;
+  }
+}
+
+void arrayEdgeFlag(const pipeline::ArrayView& a, uint32_t i) {
+  scalarAs<GLboolean>(a.elementBytes(i), glEdgeFlagv);
+}
+
+template <typename T, typename M1, typename M2, typename M3, typename M4>
+void texCoordAs(const uint8_t* bytes, int size, GLenum unit, M1 m1, M2 m2, M3 m3, M4 m4) {
+  T v[4];
+  readComponents(bytes, size, v);
+  switch (size) {
+    case 1: return m1(unit, v);
+    case 2: return m2(unit, v);
+    case 3: return m3(unit, v);
+    default: return m4(unit, v);
+  }
+}
+
+void arrayTexCoord(const pipeline::ArrayView& a, uint32_t i, GLenum unit) {
+  const uint8_t* p = a.elementBytes(i);
+  switch (a.type) {
+    case GL_SHORT:
+      return texCoordAs<GLshort>(p, a.size, unit, glMultiTexCoord1sv, glMultiTexCoord2sv, glMultiTexCoord3sv,
+                                 glMultiTexCoord4sv);
+    case GL_INT:
+      return texCoordAs<GLint>(p, a.size, unit, glMultiTexCoord1iv, glMultiTexCoord2iv, glMultiTexCoord3iv,
+                               glMultiTexCoord4iv);
+    case GL_FLOAT:
+      return texCoordAs<GLfloat>(p, a.size, unit, glMultiTexCoord1fv, glMultiTexCoord2fv, glMultiTexCoord3fv,
+                                 glMultiTexCoord4fv);
+    case GL_DOUBLE:
+      return texCoordAs<GLdouble>(p, a.size, unit, glMultiTexCoord1dv, glMultiTexCoord2dv, glMultiTexCoord3dv,
+                                  glMultiTexCoord4dv);
+    default: return;
+  }
+}
+
 }  // namespace
 
 extern "C" {
@@ -177,6 +254,12 @@ GLAPI void APIENTRY glArrayElement(GLint i) {
   pipeline::ArraySources src;
   if (!resolve(*ctx, src)) return;
   const uint32_t e = static_cast<uint32_t>(i);
+  if (src.edgeFlag) arrayEdgeFlag(src.edgeFlagView, e);
+  for (int u = 0; u < kMaxTextureCoords; ++u)
+    if (src.texCoord[u]) arrayTexCoord(src.texCoordView[u], e, GL_TEXTURE0 + u);
+  if (src.fogCoord) arrayFogCoord(src.fogCoordView, e);
+  if (src.index) arrayIndex(src.indexView, e);
+  if (src.secondaryColor) arraySecondaryColor(src.secondaryColorView, e);
   if (src.color) arrayColor(src.colorView, e);
   if (src.normal) arrayNormal(src.normalView, e);
   if (src.vertex) arrayVertex(src.vertexView, e);  // last: it emits the vertex

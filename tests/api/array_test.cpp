@@ -466,6 +466,40 @@ TEST_F(ArrayDrawTest, ArrayElementSetsTheCurrentColour) {
   EXPECT_FLOAT_EQ(c[2], 1.0f);
 }
 
+// The other arrays too: each sets its current value (GL 2.1 §2.8).
+TEST_F(ArrayDrawTest, ArrayElementSetsEveryCurrentValue) {
+  static const GLubyte secondary[6] = {0, 0, 0, 255, 0, 51};
+  static const GLdouble fog[2] = {0, 2.5};
+  static const GLshort index[2] = {0, 7};
+  static const GLboolean edge[2] = {GL_TRUE, GL_FALSE};
+  static const GLfloat tex[6] = {0, 0, 0, 0.25f, 0.5f, 0.75f};
+  glEnableClientState(GL_SECONDARY_COLOR_ARRAY);
+  glSecondaryColorPointer(3, GL_UNSIGNED_BYTE, 0, secondary);
+  glEnableClientState(GL_FOG_COORD_ARRAY);
+  glFogCoordPointer(GL_DOUBLE, 0, fog);
+  glEnableClientState(GL_INDEX_ARRAY);
+  glIndexPointer(GL_SHORT, 0, index);
+  glEnableClientState(GL_EDGE_FLAG_ARRAY);
+  glEdgeFlagPointer(0, edge);
+  glEnableClientState(GL_TEXTURE_COORD_ARRAY);  // unit 0: GL_CURRENT_TEXTURE_COORDS reads the active unit's
+  glTexCoordPointer(3, GL_FLOAT, 0, tex);
+  glDisableClientState(GL_VERTEX_ARRAY);
+  glArrayElement(1);  // outside glBegin/glEnd: sets the current values only
+  EXPECT_NO_GL_ERROR();
+  auto sc = GetFloats<3>(GL_CURRENT_SECONDARY_COLOR);
+  EXPECT_FLOAT_EQ(sc[0], 1.0f);
+  EXPECT_FLOAT_EQ(sc[1], 0.0f);
+  EXPECT_FLOAT_EQ(sc[2], 0.2f);
+  EXPECT_FLOAT_EQ(GetFloat(GL_CURRENT_FOG_COORD), 2.5f);
+  EXPECT_FLOAT_EQ(GetFloat(GL_CURRENT_INDEX), 7.0f);
+  EXPECT_EQ(GetBool(GL_EDGE_FLAG), GL_FALSE);
+  auto t = GetFloats<4>(GL_CURRENT_TEXTURE_COORDS);
+  EXPECT_FLOAT_EQ(t[0], 0.25f);
+  EXPECT_FLOAT_EQ(t[1], 0.5f);
+  EXPECT_FLOAT_EQ(t[2], 0.75f);
+  EXPECT_FLOAT_EQ(t[3], 1.0f);
+}
+
 TEST_F(ArrayDrawTest, MultiDrawArraysDrawsEachRange) {
   static const GLfloat halves[16] = {-1, -1, 0, -1, 0, 1, -1, 1, 0, -1, 1, -1, 1, 1, 0, 1};
   glVertexPointer(2, GL_FLOAT, 0, halves);

@@ -5,6 +5,8 @@
 // pipeline/array_draw.h.
 #include <algorithm>
 #include <cstring>
+#include <new>
+#include <stdexcept>
 #include <vector>
 
 #include "api/api.h"
@@ -79,13 +81,28 @@ bool readIndices(Context& ctx, GLsizei count, GLenum type, const void* indices, 
   return true;
 }
 
+// Runs a draw; a batch too large to allocate is GL_OUT_OF_MEMORY, never an
+// exception out of the entry point.
+template <typename Draw>
+void guarded(Context& ctx, Draw draw) {
+  try {
+    draw();
+  } catch (const std::bad_alloc&) {
+    ctx.recordError(GL_OUT_OF_MEMORY);
+  } catch (const std::length_error&) {
+    ctx.recordError(GL_OUT_OF_MEMORY);
+  }
+}
+
 void drawElements(Context& ctx, GLenum mode, GLsizei count, GLenum type, const void* indices) {
   pipeline::ArraySources src;
   if (!resolve(ctx, src)) return;
   static thread_local std::vector<uint32_t> list;
-  if (!readIndices(ctx, count, type, indices, list)) return;
+  bool read = false;
+  guarded(ctx, [&] { read = readIndices(ctx, count, type, indices, list); });
+  if (!read) return;
   pipeline::flushVertices(ctx);
-  pipeline::drawElements(ctx, src, mode, list);
+  guarded(ctx, [&] { pipeline::drawElements(ctx, src, mode, list); });
 }
 
 // glArrayElement issues the glColor, glNormal and glVertex command of each
@@ -272,7 +289,9 @@ GLAPI void APIENTRY glDrawArrays(GLenum mode, GLint first, GLsizei count) {
   pipeline::ArraySources src;
   if (!resolve(*ctx, src)) return;
   pipeline::flushVertices(*ctx);
-  pipeline::drawArrays(*ctx, src, mode, static_cast<uint32_t>(first), static_cast<uint32_t>(count));
+  guarded(*ctx, [&] {
+    pipeline::drawArrays(*ctx, src, mode, static_cast<uint32_t>(first), static_cast<uint32_t>(count));
+  });
 }
 
 GLAPI void APIENTRY glDrawElements(GLenum mode, GLsizei count, GLenum type, const void* indices) {
@@ -303,8 +322,10 @@ GLAPI void APIENTRY glMultiDrawArrays(GLenum mode, const GLint* first, const GLs
   pipeline::ArraySources src;
   if (!resolve(*ctx, src)) return;
   pipeline::flushVertices(*ctx);
-  for (GLsizei i = 0; i < drawcount; ++i)
-    pipeline::drawArrays(*ctx, src, mode, static_cast<uint32_t>(first[i]), static_cast<uint32_t>(count[i]));
+  guarded(*ctx, [&] {
+    for (GLsizei i = 0; i < drawcount; ++i)
+      pipeline::drawArrays(*ctx, src, mode, static_cast<uint32_t>(first[i]), static_cast<uint32_t>(count[i]));
+  });
 }
 
 GLAPI void APIENTRY glMultiDrawElements(GLenum mode, const GLsizei* count, GLenum type,

@@ -226,6 +226,28 @@ TEST_F(BufferObjectTest, DrawFromBuffersAndIndicesPastTheEnd) {
   glDeleteBuffers(2, b);
 }
 
+// A draw of 2^31 - 1 vertices from an 8-vertex buffer: never reads outside
+// the buffer, draws what the real vertices make, and ends quickly.
+TEST_F(BufferObjectTest, DrawFarPastTheEndOfABuffer) {
+  GLFX_SKIP_ON_MESA("not run on Mesa: it would process all 2^31 vertices");
+  const GLfloat quad[16] = {-1, -1, 1, -1, 1, 1, -1, 1, -1, -1, 1, -1, 1, 1, -1, 1};
+  GLuint b;
+  glGenBuffers(1, &b);
+  glBindBuffer(GL_ARRAY_BUFFER, b);
+  glBufferData(GL_ARRAY_BUFFER, sizeof quad, quad, GL_STATIC_DRAW);
+  glVertexPointer(2, GL_FLOAT, 0, nullptr);
+  glEnableClientState(GL_VERTEX_ARRAY);
+  glClearColor(0, 0, 0, 0);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glColor3f(0, 1, 1);
+  for (GLenum mode : {GL_TRIANGLES, GL_QUADS, GL_TRIANGLE_STRIP, GL_TRIANGLE_FAN, GL_QUAD_STRIP, GL_POLYGON})
+    glDrawArrays(mode, 4, 0x7fffffff);
+  EXPECT_NO_GL_ERROR();
+  const unsigned char* px = pixels() + (32 * kWidth + 32) * 4;
+  EXPECT_EQ(px[1], 255);  // the quad made by the real vertices 4..7 is drawn
+  glDeleteBuffers(1, &b);
+}
+
 TEST_F(BufferObjectTest, DrawingFromAMappedBufferIsAnError) {
   GLFX_SKIP_ON_MESA("Mesa draws from a mapped buffer without an error");
   const GLfloat quad[8] = {-1, -1, 1, -1, 1, 1, -1, 1};

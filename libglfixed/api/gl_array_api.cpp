@@ -32,6 +32,7 @@ void setPointer(Pick which, GLint size, GLint minSize, GLint maxSize, GLenum typ
   a.stride = stride;
   a.pointer = pointer;
   a.bufferBinding = ctx->vertexArray.arrayBufferBinding;
+  a.orphaned = false;
 }
 
 void setClientState(GLenum cap, bool enabled) {
@@ -79,6 +80,7 @@ void storeArray(ClientArray& a, bool enabled, GLint size, GLenum type, GLsizei s
   a.stride = stride;
   a.pointer = pointer;
   a.bufferBinding = binding;
+  a.orphaned = false;
 }
 
 }  // namespace
@@ -190,6 +192,12 @@ GLAPI void APIENTRY glPopClientAttrib(void) {
   auto live = [&](GLuint& name) {
     if (name != 0 && !ctx->buffers.find(name)) name = 0;
   };
+  auto liveArray = [&](ClientArray& c) {
+    if (c.bufferBinding != 0 && !ctx->buffers.find(c.bufferBinding)) {
+      c.bufferBinding = 0;
+      c.orphaned = true;
+    }
+  };
   if (e.mask & GL_CLIENT_PIXEL_STORE_BIT) {
     live(e.pixelStore.pixelPackBufferBinding);
     live(e.pixelStore.pixelUnpackBufferBinding);
@@ -201,8 +209,8 @@ GLAPI void APIENTRY glPopClientAttrib(void) {
     live(v.elementArrayBufferBinding);
     for (ClientArray* c :
          {&v.vertex, &v.normal, &v.color, &v.secondaryColor, &v.fogCoord, &v.index, &v.edgeFlag})
-      live(c->bufferBinding);
-    for (ClientArray& c : v.texCoord) live(c.bufferBinding);
+      liveArray(*c);
+    for (ClientArray& c : v.texCoord) liveArray(c);
     ctx->vertexArray = v;
   }
 }

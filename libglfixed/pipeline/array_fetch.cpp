@@ -58,6 +58,11 @@ bool resolve(const Context& ctx, const ClientArray& a, bool normalized, ArrayVie
   v.normalized = normalized;
   v.stride = effectiveStride(a);
   const uintptr_t offset = reinterpret_cast<uintptr_t>(a.pointer);
+  if (a.orphaned) {  // an offset into a deleted buffer: zeros
+    v.base = nullptr;
+    v.limit = 0;
+    return true;
+  }
   if (a.bufferBinding == 0) {
     v.base = static_cast<const uint8_t*>(a.pointer);
     v.limit = v.base ? SIZE_MAX : 0;  // a null client pointer reads as zeros

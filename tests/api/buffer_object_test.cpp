@@ -193,7 +193,31 @@ TEST_F(BufferObjectTest, ArrayPointersAreOffsets) {
   glDeleteBuffers(1, &b[0]);  // every binding of it reverts to 0
   EXPECT_EQ(GetInt(GL_VERTEX_ARRAY_BUFFER_BINDING), 0);
   EXPECT_EQ(GetInt(GL_COLOR_ARRAY_BUFFER_BINDING), static_cast<GLint>(b[1]));
+  glGetPointerv(GL_VERTEX_ARRAY_POINTER, &p);
+  EXPECT_EQ(p, reinterpret_cast<void*>(16));
   glDeleteBuffers(1, &b[1]);
+  EXPECT_NO_GL_ERROR();
+}
+
+// An array whose buffer was deleted keeps its offset as the pointer; a draw
+// must not read client memory at that address.
+TEST_F(BufferObjectTest, DrawAfterTheArrayBufferIsDeleted) {
+  GLFX_SKIP_ON_MESA("Mesa reads client memory at the old offset (a crash)");
+  const GLfloat quad[8] = {-1, -1, 1, -1, 1, 1, -1, 1};
+  GLuint b;
+  glGenBuffers(1, &b);
+  glBindBuffer(GL_ARRAY_BUFFER, b);
+  glBufferData(GL_ARRAY_BUFFER, sizeof quad, quad, GL_STATIC_DRAW);
+  glVertexPointer(2, GL_FLOAT, 0, reinterpret_cast<void*>(16));
+  glEnableClientState(GL_VERTEX_ARRAY);
+  glPushClientAttrib(GL_CLIENT_VERTEX_ARRAY_BIT);
+  glDeleteBuffers(1, &b);
+  glDrawArrays(GL_QUADS, 0, 4);
+  glArrayElement(0);
+  glPopClientAttrib();  // restores an array of the deleted buffer
+  EXPECT_EQ(GetInt(GL_VERTEX_ARRAY_BUFFER_BINDING), 0);
+  EXPECT_EQ(GetInt(GL_ARRAY_BUFFER_BINDING), 0);
+  glDrawArrays(GL_QUADS, 0, 4);
   EXPECT_NO_GL_ERROR();
 }
 

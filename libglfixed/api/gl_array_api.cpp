@@ -16,8 +16,8 @@ bool oneOf(GLenum v, std::initializer_list<GLenum> allowed) {
   return false;
 }
 
-// Validates and stores one array's pointer. The errors in Mesa's order:
-// a negative stride, then the type, then the size.
+// Validates and stores one array's pointer: a negative stride, a type or a
+// size the array does not take is an error and changes nothing (GL 2.1 §2.8).
 template <typename Pick>
 void setPointer(Pick which, GLint size, GLint minSize, GLint maxSize, GLenum type,
                 std::initializer_list<GLenum> types, GLsizei stride, const void* pointer) {

@@ -17,8 +17,6 @@ using Submission = primitive::PrimitiveState::Submission;
 // millions of vertices never holds more than this many at once.
 constexpr size_t kSegmentsPerChunk = 4;
 
-}  // namespace
-
 // Elements past the end of a vertex array in a buffer object all read as the
 // same point, so every primitive made only of them is degenerate and draws
 // nothing. A draw far past the end is cut a little after it: the first
@@ -34,6 +32,8 @@ uint32_t countWithinBuffer(const ArrayView& v, uint32_t first, uint32_t count) {
   const size_t kept = (fromFirst + 4 + 11) / 12 * 12;
   return static_cast<uint32_t>(std::min<size_t>(count, kept));
 }
+
+}  // namespace
 
 void drawArrays(Context& ctx, const ArraySources& src, GLenum mode, uint32_t first, uint32_t count) {
   if (!src.vertex) return;  // no vertex array: nothing is drawn (GL 2.1 §2.8)

@@ -95,6 +95,9 @@ bool isImplemented(const char* name) {
   return e && e->address != e->stub;
 }
 
-void* procAddress(const char* name) { return isImplemented(name) ? find(name)->address : nullptr; }
+void* procAddress(const char* name) {
+  if (isImplemented(name)) return find(name)->address;
+  return extensionAliasAddress(name);
+}
 
 }  // namespace glfixed::api

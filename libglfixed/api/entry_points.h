@@ -8,6 +8,9 @@ namespace glfixed::api {
 
 void* procAddress(const char* name);
 
+// An ARB/EXT name of an implemented command (gl_arb_aliases.cpp), or null.
+void* extensionAliasAddress(const char* name);
+
 // True if `name` is a GL command this library implements.
 bool isImplemented(const char* name);
 

@@ -17,8 +17,8 @@ bool oneOf(GLenum v, std::initializer_list<GLenum> allowed) {
   return false;
 }
 
-// Validates and stores one array's pointer. The errors in Mesa's order:
-// a negative stride, then the type, then the size.
+// Validates and stores one array's pointer: a negative stride, a type or a
+// size the array does not take is an error and changes nothing (GL 2.1 §2.8).
 template <typename Pick>
 void setPointer(Pick which, GLint size, GLint minSize, GLint maxSize, GLenum type,
                 std::initializer_list<GLenum> types, GLsizei stride, const void* pointer) {
@@ -33,6 +33,7 @@ void setPointer(Pick which, GLint size, GLint minSize, GLint maxSize, GLenum typ
   a.stride = stride;
   a.pointer = pointer;
   a.bufferBinding = ctx->vertexArray.arrayBufferBinding;
+  a.orphaned = false;
 }
 
 void setClientState(GLenum cap, bool enabled) {
@@ -80,6 +81,7 @@ void storeArray(ClientArray& a, bool enabled, GLint size, GLenum type, GLsizei s
   a.stride = stride;
   a.pointer = pointer;
   a.bufferBinding = binding;
+  a.orphaned = false;
 }
 
 }  // namespace
@@ -193,6 +195,12 @@ GLAPI void APIENTRY glPopClientAttrib(void) {
   auto live = [&](GLuint& name) {
     if (name != 0 && !ctx->buffers.find(name)) name = 0;
   };
+  auto liveArray = [&](ClientArray& c) {
+    if (c.bufferBinding != 0 && !ctx->buffers.find(c.bufferBinding)) {
+      c.bufferBinding = 0;
+      c.orphaned = true;
+    }
+  };
   if (e.mask & GL_CLIENT_PIXEL_STORE_BIT) {
     live(e.pixelStore.pixelPackBufferBinding);
     live(e.pixelStore.pixelUnpackBufferBinding);
@@ -204,8 +212,8 @@ GLAPI void APIENTRY glPopClientAttrib(void) {
     live(v.elementArrayBufferBinding);
     for (ClientArray* c :
          {&v.vertex, &v.normal, &v.color, &v.secondaryColor, &v.fogCoord, &v.index, &v.edgeFlag})
-      live(c->bufferBinding);
-    for (ClientArray& c : v.texCoord) live(c.bufferBinding);
+      liveArray(*c);
+    for (ClientArray& c : v.texCoord) liveArray(c);
     ctx->vertexArray = v;
   }
 }

@@ -5,6 +5,8 @@
 // pipeline/array_draw.h.
 #include <algorithm>
 #include <cstring>
+#include <new>
+#include <stdexcept>
 #include <vector>
 
 #include "api/api.h"
@@ -79,13 +81,28 @@ bool readIndices(Context& ctx, GLsizei count, GLenum type, const void* indices, 
   return true;
 }
 
+// Runs a draw; a batch too large to allocate is GL_OUT_OF_MEMORY, never an
+// exception out of the entry point.
+template <typename Draw>
+void guarded(Context& ctx, Draw draw) {
+  try {
+    draw();
+  } catch (const std::bad_alloc&) {
+    ctx.recordError(GL_OUT_OF_MEMORY);
+  } catch (const std::length_error&) {
+    ctx.recordError(GL_OUT_OF_MEMORY);
+  }
+}
+
 void drawElements(Context& ctx, GLenum mode, GLsizei count, GLenum type, const void* indices) {
   pipeline::ArraySources src;
   if (!resolve(ctx, src)) return;
   static thread_local std::vector<uint32_t> list;
-  if (!readIndices(ctx, count, type, indices, list)) return;
+  bool read = false;
+  guarded(ctx, [&] { read = readIndices(ctx, count, type, indices, list); });
+  if (!read) return;
   pipeline::flushVertices(ctx);
-  pipeline::drawElements(ctx, src, mode, list);
+  guarded(ctx, [&] { pipeline::drawElements(ctx, src, mode, list); });
 }
 
 // glArrayElement issues the glColor, glNormal and glVertex command of each
@@ -165,6 +182,83 @@ void arrayVertex(const pipeline::ArrayView& a, uint32_t i) {
   }
 }
 
+void arraySecondaryColor(const pipeline::ArrayView& a, uint32_t i) {
+  const uint8_t* p = a.elementBytes(i);
+  auto none = [](const void*) {};
+  switch (a.type) {
+    case GL_BYTE: return colorAs<GLbyte>(p, 3, glSecondaryColor3bv, none);
+    case GL_UNSIGNED_BYTE: return colorAs<GLubyte>(p, 3, glSecondaryColor3ubv, none);
+    case GL_SHORT: return colorAs<GLshort>(p, 3, glSecondaryColor3sv, none);
+    case GL_UNSIGNED_SHORT: return colorAs<GLushort>(p, 3, glSecondaryColor3usv, none);
+    case GL_INT: return colorAs<GLint>(p, 3, glSecondaryColor3iv, none);
+    case GL_UNSIGNED_INT: return colorAs<GLuint>(p, 3, glSecondaryColor3uiv, none);
+    case GL_FLOAT: return colorAs<GLfloat>(p, 3, glSecondaryColor3fv, none);
+    case GL_DOUBLE: return colorAs<GLdouble>(p, 3, glSecondaryColor3dv, none);
+    default: return;
+  }
+}
+
+// The scalar arrays: fog coordinate, colour index, edge flag.
+template <typename T, typename F>
+void scalarAs(const uint8_t* bytes, F set) {
+  T v[4];
+  readComponents(bytes, 1, v);
+  set(v);
+}
+
+void arrayFogCoord(const pipeline::ArrayView& a, uint32_t i) {
+  const uint8_t* p = a.elementBytes(i);
+  if (a.type == GL_DOUBLE) return scalarAs<GLdouble>(p, glFogCoorddv);
+  return scalarAs<GLfloat>(p, glFogCoordfv);
+}
+
+void arrayIndex(const pipeline::ArrayView& a, uint32_t i) {
+  const uint8_t* p = a.elementBytes(i);
+  switch (a.type) {
+    case GL_UNSIGNED_BYTE: return scalarAs<GLubyte>(p, glIndexubv);
+    case GL_SHORT: return scalarAs<GLshort>(p, glIndexsv);
+    case GL_INT: return scalarAs<GLint>(p, glIndexiv);
+    case GL_FLOAT: return scalarAs<GLfloat>(p, glIndexfv);
+    case GL_DOUBLE: return scalarAs<GLdouble>(p, glIndexdv);
+    default: return;
+  }
+}
+
+void arrayEdgeFlag(const pipeline::ArrayView& a, uint32_t i) {
+  scalarAs<GLboolean>(a.elementBytes(i), glEdgeFlagv);
+}
+
+template <typename T, typename M1, typename M2, typename M3, typename M4>
+void texCoordAs(const uint8_t* bytes, int size, GLenum unit, M1 m1, M2 m2, M3 m3, M4 m4) {
+  T v[4];
+  readComponents(bytes, size, v);
+  switch (size) {
+    case 1: return m1(unit, v);
+    case 2: return m2(unit, v);
+    case 3: return m3(unit, v);
+    default: return m4(unit, v);
+  }
+}
+
+void arrayTexCoord(const pipeline::ArrayView& a, uint32_t i, GLenum unit) {
+  const uint8_t* p = a.elementBytes(i);
+  switch (a.type) {
+    case GL_SHORT:
+      return texCoordAs<GLshort>(p, a.size, unit, glMultiTexCoord1sv, glMultiTexCoord2sv, glMultiTexCoord3sv,
+                                 glMultiTexCoord4sv);
+    case GL_INT:
+      return texCoordAs<GLint>(p, a.size, unit, glMultiTexCoord1iv, glMultiTexCoord2iv, glMultiTexCoord3iv,
+                               glMultiTexCoord4iv);
+    case GL_FLOAT:
+      return texCoordAs<GLfloat>(p, a.size, unit, glMultiTexCoord1fv, glMultiTexCoord2fv, glMultiTexCoord3fv,
+                                 glMultiTexCoord4fv);
+    case GL_DOUBLE:
+      return texCoordAs<GLdouble>(p, a.size, unit, glMultiTexCoord1dv, glMultiTexCoord2dv, glMultiTexCoord3dv,
+                                  glMultiTexCoord4dv);
+    default: return;
+  }
+}
+
 }  // namespace
 
 extern "C" {
@@ -177,6 +271,12 @@ GLAPI void APIENTRY glArrayElement(GLint i) {
   pipeline::ArraySources src;
   if (!resolve(*ctx, src)) return;
   const uint32_t e = static_cast<uint32_t>(i);
+  if (src.edgeFlag) arrayEdgeFlag(src.edgeFlagView, e);
+  for (int u = 0; u < kMaxTextureCoords; ++u)
+    if (src.texCoord[u]) arrayTexCoord(src.texCoordView[u], e, GL_TEXTURE0 + u);
+  if (src.fogCoord) arrayFogCoord(src.fogCoordView, e);
+  if (src.index) arrayIndex(src.indexView, e);
+  if (src.secondaryColor) arraySecondaryColor(src.secondaryColorView, e);
   if (src.color) arrayColor(src.colorView, e);
   if (src.normal) arrayNormal(src.normalView, e);
   if (src.vertex) arrayVertex(src.vertexView, e);  // last: it emits the vertex
@@ -189,7 +289,9 @@ GLAPI void APIENTRY glDrawArrays(GLenum mode, GLint first, GLsizei count) {
   pipeline::ArraySources src;
   if (!resolve(*ctx, src)) return;
   pipeline::flushVertices(*ctx);
-  pipeline::drawArrays(*ctx, src, mode, static_cast<uint32_t>(first), static_cast<uint32_t>(count));
+  guarded(*ctx, [&] {
+    pipeline::drawArrays(*ctx, src, mode, static_cast<uint32_t>(first), static_cast<uint32_t>(count));
+  });
 }
 
 GLAPI void APIENTRY glDrawElements(GLenum mode, GLsizei count, GLenum type, const void* indices) {
@@ -220,8 +322,10 @@ GLAPI void APIENTRY glMultiDrawArrays(GLenum mode, const GLint* first, const GLs
   pipeline::ArraySources src;
   if (!resolve(*ctx, src)) return;
   pipeline::flushVertices(*ctx);
-  for (GLsizei i = 0; i < drawcount; ++i)
-    pipeline::drawArrays(*ctx, src, mode, static_cast<uint32_t>(first[i]), static_cast<uint32_t>(count[i]));
+  guarded(*ctx, [&] {
+    for (GLsizei i = 0; i < drawcount; ++i)
+      pipeline::drawArrays(*ctx, src, mode, static_cast<uint32_t>(first[i]), static_cast<uint32_t>(count[i]));
+  });
 }
 
 GLAPI void APIENTRY glMultiDrawElements(GLenum mode, const GLsizei* count, GLenum type,

@@ -103,10 +103,15 @@ GLAPI void APIENTRY glDeleteBuffers(GLsizei n, const GLuint* buffers) {
     unbind(v.elementArrayBufferBinding);
     unbind(ctx->pixelStore.pixelPackBufferBinding);
     unbind(ctx->pixelStore.pixelUnpackBufferBinding);
+    auto orphan = [name](ClientArray& c) {
+      if (c.bufferBinding != name) return;
+      c.bufferBinding = 0;
+      c.orphaned = true;
+    };
     for (ClientArray* c :
          {&v.vertex, &v.normal, &v.color, &v.secondaryColor, &v.fogCoord, &v.index, &v.edgeFlag})
-      unbind(c->bufferBinding);
-    for (ClientArray& c : v.texCoord) unbind(c.bufferBinding);
+      orphan(*c);
+    for (ClientArray& c : v.texCoord) orphan(c);
     ctx->buffers.remove(name);
   }
 }

@@ -47,6 +47,19 @@ GLAPI void APIENTRY glReadPixels(GLint x, GLint y, GLsizei width, GLsizei height
     ctx->recordError(GL_INVALID_VALUE);
     return;
   }
+  if (const GLuint name = ctx->pixelStore.pixelPackBufferBinding) {
+    // GL 2.1 §4.3.5: `pixels` is an offset into the pixel pack buffer, and
+    // the whole image must fit in it.
+    const GLenum formatError = readPixels(ctx->framebuffer, ctx->pixelStore, x, y, 0, 0, format, type, nullptr);
+    if (formatError != GL_NO_ERROR) return ctx->recordError(formatError);
+    BufferObject* b = ctx->buffers.find(name);
+    const size_t offset = reinterpret_cast<uintptr_t>(pixels);
+    const size_t bytes = packedImageBytes(ctx->pixelStore, width, height, format, type);
+    if (!b || b->mapped || offset > b->data.size() || bytes > b->data.size() - offset)
+      return ctx->recordError(GL_INVALID_OPERATION);
+    if (bytes == 0) return;
+    pixels = b->data.data() + offset;
+  }
   GLenum error = readPixels(ctx->framebuffer, ctx->pixelStore, x, y, width, height, format, type, pixels);
   if (error != GL_NO_ERROR) ctx->recordError(error);
 }

@@ -100,6 +100,18 @@ void storeComponent(uint8_t* dst, GLenum type, float f) {
 
 }  // namespace
 
+size_t packedImageBytes(const PixelStoreAttrib& pack, GLsizei width, GLsizei height, GLenum format, GLenum type) {
+  if (width <= 0 || height <= 0 || !isKnownFormat(format) || !isKnownType(type)) return 0;
+  const int componentBytes = isPacked8888(type) ? 1 : bytesOf(type);
+  const size_t pixelBytes = isPacked8888(type) ? 4 : static_cast<size_t>(componentsOf(format)) * componentBytes;
+  const size_t rowPixels = pack.packRowLength > 0 ? pack.packRowLength : width;
+  size_t rowBytes = rowPixels * pixelBytes;
+  const size_t align = static_cast<size_t>(pack.packAlignment);
+  if (componentBytes < static_cast<int>(align)) rowBytes = (rowBytes + align - 1) / align * align;
+  return (static_cast<size_t>(pack.packSkipRows) + height - 1) * rowBytes +
+         (static_cast<size_t>(pack.packSkipPixels) + width) * pixelBytes;
+}
+
 GLenum readPixels(const Framebuffer& fb, const PixelStoreAttrib& pack, GLint x, GLint y, GLsizei width,
                   GLsizei height, GLenum format, GLenum type, void* pixels) {
   if (!isKnownFormat(format) || !isKnownType(type)) return GL_INVALID_ENUM;

@@ -1,5 +1,7 @@
 #include "pipeline/array_draw.h"
 
+#include <algorithm>
+
 #include "pipeline/draw.h"
 #include "primitive/assemble.h"
 #include "state/context.h"
@@ -15,10 +17,28 @@ using Submission = primitive::PrimitiveState::Submission;
 // millions of vertices never holds more than this many at once.
 constexpr size_t kSegmentsPerChunk = 4;
 
+// Elements past the end of a vertex array in a buffer object all read as the
+// same point, so every primitive made only of them is degenerate and draws
+// nothing. A draw far past the end is cut a little after it: the first
+// past-end elements are kept (with the last real ones they make real
+// primitives, and they take part in their segment's clipping decision), a
+// multiple of 12 from `first` keeps every mode's primitives whole, and the
+// segments dropped would have drawn nothing.
+uint32_t countWithinBuffer(const ArrayView& v, uint32_t first, uint32_t count) {
+  if (v.limit == SIZE_MAX) return count;
+  const size_t need = static_cast<size_t>(v.size) * componentBytes(v.type);
+  const size_t available = v.limit >= need ? (v.limit - need) / v.stride + 1 : 0;
+  const size_t fromFirst = available > first ? available - first : 0;
+  const size_t kept = (fromFirst + 4 + 11) / 12 * 12;
+  return static_cast<uint32_t>(std::min<size_t>(count, kept));
+}
+
 }  // namespace
 
 void drawArrays(Context& ctx, const ArraySources& src, GLenum mode, uint32_t first, uint32_t count) {
-  if (!src.vertex || count == 0) return;  // no vertex array: nothing is drawn (GL 2.1 §2.8)
+  if (!src.vertex) return;  // no vertex array: nothing is drawn (GL 2.1 §2.8)
+  count = countWithinBuffer(src.vertexView, first, count);
+  if (count == 0) return;
   static thread_local VertexBatch batch;
   // Mesa's draw module splits a long draw into segments and decides for each
   // alone whether it needs clipping (assemble.h). A chunk of whole segments,

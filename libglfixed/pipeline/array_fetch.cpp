@@ -58,6 +58,11 @@ bool resolve(const Context& ctx, const ClientArray& a, bool normalized, ArrayVie
   v.normalized = normalized;
   v.stride = effectiveStride(a);
   const uintptr_t offset = reinterpret_cast<uintptr_t>(a.pointer);
+  if (a.orphaned) {  // an offset into a deleted buffer: zeros
+    v.base = nullptr;
+    v.limit = 0;
+    return true;
+  }
   if (a.bufferBinding == 0) {
     v.base = static_cast<const uint8_t*>(a.pointer);
     v.limit = v.base ? SIZE_MAX : 0;  // a null client pointer reads as zeros
@@ -124,14 +129,16 @@ GLenum resolveArrays(const Context& ctx, ArraySources& out) {
   if (out.normal) ok &= resolve(ctx, a.normal, true, out.normalView);
   if (out.color) ok &= resolve(ctx, a.color, true, out.colorView);
   // The arrays not fetched may not source a mapped buffer either.
-  for (const ClientArray* c : {&a.secondaryColor, &a.fogCoord, &a.index, &a.edgeFlag}) {
-    ArrayView unused;
-    if (c->enabled) ok &= resolve(ctx, *c, false, unused);
-  }
-  for (const ClientArray& c : a.texCoord) {
-    ArrayView unused;
-    if (c.enabled) ok &= resolve(ctx, c, false, unused);
-  }
+  auto other = [&](const ClientArray& c, bool normalized, bool& enabled, ArrayView& view) {
+    enabled = c.enabled;
+    if (enabled) ok &= resolve(ctx, c, normalized, view);
+  };
+  other(a.secondaryColor, true, out.secondaryColor, out.secondaryColorView);
+  other(a.fogCoord, false, out.fogCoord, out.fogCoordView);
+  other(a.index, false, out.index, out.indexView);
+  other(a.edgeFlag, false, out.edgeFlag, out.edgeFlagView);
+  for (int u = 0; u < kMaxTextureCoords; ++u)
+    other(a.texCoord[u], false, out.texCoord[u], out.texCoordView[u]);
   return ok ? GL_NO_ERROR : GL_INVALID_OPERATION;
 }
 

@@ -36,12 +36,17 @@ struct ArrayView {
   const uint8_t* elementBytes(uint32_t i) const;
 };
 
-// The arrays a draw reads. Secondary colour, fog coordinate, colour index,
-// edge flag and texture coordinates are array state only: no stage reads
-// them yet, so they are not fetched.
+// The enabled arrays, resolved. Draws fetch positions, normals and colours
+// only: no stage reads the secondary colour, fog coordinate, colour index,
+// edge flag or texture coordinates yet (glArrayElement passes them on as the
+// current values they set).
 struct ArraySources {
   bool vertex = false, normal = false, color = false;
   ArrayView vertexView, normalView, colorView;
+  bool secondaryColor = false, fogCoord = false, index = false, edgeFlag = false;
+  ArrayView secondaryColorView, fogCoordView, indexView, edgeFlagView;
+  bool texCoord[kMaxTextureCoords] = {};
+  ArrayView texCoordView[kMaxTextureCoords];
 };
 
 // Resolves the enabled arrays of `ctx` (buffer offsets to memory). Returns

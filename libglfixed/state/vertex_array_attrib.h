@@ -20,6 +20,10 @@ struct ClientArray {
   GLsizei stride = 0;  // as given; 0 means tightly packed
   const void* pointer = nullptr;
   GLuint bufferBinding = 0;
+  // The buffer this array sourced was deleted: its binding reads 0 (GL 2.1
+  // §2.9), but `pointer` is still an offset, not client memory; it reads as
+  // zeros until a new pointer is given.
+  bool orphaned = false;
 
   static ClientArray make(GLint size, GLenum type) {
     ClientArray a;

@@ -1,0 +1,11 @@
+#!/usr/bin/env bash
+# Peak memory of one glDrawArrays of 10 million lit vertices, on Mesa
+# (llvmpipe) and on libglfixed: bench/array_memory.c. Usage, after building:
+#   bench/run_memory_bench.sh [build-dir] [vertices]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+build="${1:-build}"
+n="${2:-10000000}"
+exe="$build/bench/bench_array_memory"
+echo "Mesa       $(env -u LD_LIBRARY_PATH "$exe" "$n")"
+echo "libglfixed $(LD_LIBRARY_PATH="$build/dropin" "$exe" "$n")"

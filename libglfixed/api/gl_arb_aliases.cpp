@@ -1,0 +1,81 @@
+// The ARB and EXT names legacy programs call for the vertex array and buffer
+// object commands (ARB_vertex_buffer_object, EXT_draw_range_elements,
+// EXT_multi_draw_arrays, ARB_multitexture's glClientActiveTextureARB): the
+// same functions under their extension names, exported and known to
+// OSMesaGetProcAddress. Mesa's gl.h/glext.h declare them; ours does not.
+#include <GL/gl.h>
+
+#include <cstring>
+
+#include "api/entry_points.h"
+
+extern "C" {
+
+GLAPI void APIENTRY glBindBufferARB(GLenum target, GLuint buffer) { glBindBuffer(target, buffer); }
+GLAPI void APIENTRY glDeleteBuffersARB(GLsizei n, const GLuint* buffers) { glDeleteBuffers(n, buffers); }
+GLAPI void APIENTRY glGenBuffersARB(GLsizei n, GLuint* buffers) { glGenBuffers(n, buffers); }
+GLAPI GLboolean APIENTRY glIsBufferARB(GLuint buffer) { return glIsBuffer(buffer); }
+GLAPI void APIENTRY glBufferDataARB(GLenum target, GLsizeiptr size, const void* data, GLenum usage) {
+  glBufferData(target, size, data, usage);
+}
+GLAPI void APIENTRY glBufferSubDataARB(GLenum target, GLintptr offset, GLsizeiptr size, const void* data) {
+  glBufferSubData(target, offset, size, data);
+}
+GLAPI void APIENTRY glGetBufferSubDataARB(GLenum target, GLintptr offset, GLsizeiptr size, void* data) {
+  glGetBufferSubData(target, offset, size, data);
+}
+GLAPI void* APIENTRY glMapBufferARB(GLenum target, GLenum access) { return glMapBuffer(target, access); }
+GLAPI GLboolean APIENTRY glUnmapBufferARB(GLenum target) { return glUnmapBuffer(target); }
+GLAPI void APIENTRY glGetBufferParameterivARB(GLenum target, GLenum pname, GLint* params) {
+  glGetBufferParameteriv(target, pname, params);
+}
+GLAPI void APIENTRY glGetBufferPointervARB(GLenum target, GLenum pname, void** params) {
+  glGetBufferPointerv(target, pname, params);
+}
+GLAPI void APIENTRY glDrawRangeElementsEXT(GLenum mode, GLuint start, GLuint end, GLsizei count, GLenum type,
+                                           const void* indices) {
+  glDrawRangeElements(mode, start, end, count, type, indices);
+}
+GLAPI void APIENTRY glMultiDrawArraysEXT(GLenum mode, const GLint* first, const GLsizei* count,
+                                         GLsizei drawcount) {
+  glMultiDrawArrays(mode, first, count, drawcount);
+}
+GLAPI void APIENTRY glMultiDrawElementsEXT(GLenum mode, const GLsizei* count, GLenum type,
+                                           const void* const* indices, GLsizei drawcount) {
+  glMultiDrawElements(mode, count, type, indices, drawcount);
+}
+GLAPI void APIENTRY glClientActiveTextureARB(GLenum texture) { glClientActiveTexture(texture); }
+
+}  // extern "C"
+
+namespace glfixed::api {
+
+namespace {
+struct Alias {
+  const char* name;
+  void* address;
+};
+// clang-format off
+#define GLFX_ALIAS(name) {#name, reinterpret_cast<void*>(&name)}
+// clang-format on
+const Alias kAliases[] = {
+    GLFX_ALIAS(glBindBufferARB),          GLFX_ALIAS(glDeleteBuffersARB),
+    GLFX_ALIAS(glGenBuffersARB),          GLFX_ALIAS(glIsBufferARB),
+    GLFX_ALIAS(glBufferDataARB),          GLFX_ALIAS(glBufferSubDataARB),
+    GLFX_ALIAS(glGetBufferSubDataARB),    GLFX_ALIAS(glMapBufferARB),
+    GLFX_ALIAS(glUnmapBufferARB),         GLFX_ALIAS(glGetBufferParameterivARB),
+    GLFX_ALIAS(glGetBufferPointervARB),   GLFX_ALIAS(glDrawRangeElementsEXT),
+    GLFX_ALIAS(glMultiDrawArraysEXT),     GLFX_ALIAS(glMultiDrawElementsEXT),
+    GLFX_ALIAS(glClientActiveTextureARB),
+};
+#undef GLFX_ALIAS
+}  // namespace
+
+void* extensionAliasAddress(const char* name) {
+  if (!name) return nullptr;
+  for (const Alias& a : kAliases)
+    if (std::strcmp(a.name, name) == 0) return a.address;
+  return nullptr;
+}
+
+}  // namespace glfixed::api

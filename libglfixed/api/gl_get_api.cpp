@@ -131,8 +131,8 @@ bool queryHeldState(Context& ctx, GLenum pname, StateValue& out) {
   }
 }
 
-// False: not a pname this library knows (GL_INVALID_ENUM).
-bool queryState(Context& ctx, GLenum pname, StateValue& out) {
+// The core's own state. False: not one of its pnames.
+bool queryCoreState(Context& ctx, GLenum pname, StateValue& out) {
   const Framebuffer& fb = ctx.framebuffer;
   const bool hasAlpha = fb.color.alpha >= 0;
   switch (pname) {
@@ -255,28 +255,50 @@ bool queryState(Context& ctx, GLenum pname, StateValue& out) {
     default:
       break;
   }
-  if (queryHeldState(ctx, pname, out)) return true;
-  // Every capability's flag is a boolean query of the same name (§6.1.1).
-  if (const Capability* c = findCapability(pname); c) {
-    out.set({double(c->flag(ctx))});
-    return true;
-  }
+  return false;
+}
+
+// Every capability's flag is a boolean query of the same name (§6.1.1).
+bool queryCapability(Context& ctx, GLenum pname, StateValue& out) {
+  const Capability* c = findCapability(pname);
+  if (c) out.set({double(c->flag(ctx))});
+  return c != nullptr;
+}
+
+// The stages that answer in GLdouble arrays of their own.
+template <bool (*Get)(const Context&, GLenum, GLdouble*, int*)>
+bool queryStage(Context& ctx, GLenum pname, StateValue& out) {
   int count = 0;
-  if (getVertexArrayState(ctx, pname, out.v, &count)) {
-    out.count = count;
-    out.kind = Kind::kPlain;
-    return true;
-  }
-  if (api::getEvalState(ctx, pname, out.v, &count)) {
-    out.count = count;
-    out.kind = Kind::kPlain;
-    return true;
-  }
-  if (getLightingState(ctx, pname, out.v, &count)) {
-    out.count = count;
-    out.kind = isNormalizedLightingQuery(pname) ? Kind::kNormalized : Kind::kPlain;
-    return true;
-  }
+  if (!Get(ctx, pname, out.v, &count)) return false;
+  out.count = count;
+  out.kind = Kind::kPlain;
+  return true;
+}
+
+bool queryLighting(Context& ctx, GLenum pname, StateValue& out) {
+  int count = 0;
+  if (!getLightingState(ctx, pname, out.v, &count)) return false;
+  out.count = count;
+  out.kind = isNormalizedLightingQuery(pname) ? Kind::kNormalized : Kind::kPlain;
+  return true;
+}
+
+// Who answers glGet (§6.1): each part answers the pnames of the state it
+// owns; a pname none of them knows is GL_INVALID_ENUM. Adding state that
+// glGet reads is a case in its owner's answer, or one row here.
+using Answer = bool (*)(Context&, GLenum, StateValue&);
+const Answer kAnswers[] = {
+    queryCoreState,                        // this file: transform, viewport, buffers, current, pixel store, ...
+    queryHeldState,                        // the groups whose stages come later
+    queryCapability,                       // state/capabilities.h
+    queryStage<getVertexArrayState>,       // state/vertex_array_queries.h
+    queryStage<api::getEvalState>,         // api/eval_commands.h
+    queryLighting,                         // vertex/lighting_queries.h
+};
+
+bool queryState(Context& ctx, GLenum pname, StateValue& out) {
+  for (Answer answer : kAnswers)
+    if (answer(ctx, pname, out)) return true;
   return false;
 }
 

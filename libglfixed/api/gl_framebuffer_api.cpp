@@ -3,6 +3,7 @@
 #include <cstring>
 
 #include "api/api.h"
+#include "api/list_record.h"
 #include "framebuffer/read_pixels.h"
 
 using namespace glfixed;
@@ -10,6 +11,7 @@ using namespace glfixed;
 extern "C" {
 
 GLAPI void APIENTRY glClear(GLbitfield mask) {
+  if (api::compiled(&glClear, mask)) return;
   Context* ctx = api::contextFlushed();
   if (!ctx) return;
   const GLbitfield known = GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT | GL_ACCUM_BUFFER_BIT;

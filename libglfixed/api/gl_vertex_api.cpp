@@ -1,6 +1,7 @@
 // glBegin/glEnd and the current vertex attributes: glVertex, glColor, glNormal
 // (GL 2.1 §2.6-§2.7), every variant.
 #include "api/api.h"
+#include "api/list_record.h"
 #include "api/normalized.h"
 #include "pipeline/immediate_mode.h"
 #include "vertex/color_material.h"
@@ -12,6 +13,7 @@ namespace {
 using api::normalized;
 
 void addVertex(float x, float y, float z, float w) {
+  if (api::compiledVertexData([&](pipeline::ListCompiler& l) { l.vertex(glm::vec4(x, y, z, w)); }, &glVertex4f, x, y, z, w)) return;
   Context* ctx = currentContext();
   if (!ctx) return;
   if (!ctx->insideBeginEnd) return;  // GL 2.1 §2.6.3: undefined outside Begin/End; ignored
@@ -23,6 +25,7 @@ void addVertex(float x, float y, float z, float w) {
 }
 
 void color(float r, float g, float b, float a) {
+  if (api::compiledVertexData([&](pipeline::ListCompiler& l) { l.color(glm::vec4(r, g, b, a)); }, &glColor4f, r, g, b, a)) return;
   Context* ctx = currentContext();
   if (!ctx) return;
   if (ctx->insideBeginEnd || ctx->vbo.verticesBuffered) pipeline::colorBecomesVertexData(*ctx);
@@ -43,6 +46,7 @@ void color4(T r, T g, T b, T a) {
 }
 
 void normal(float x, float y, float z) {
+  if (api::compiledVertexData([&](pipeline::ListCompiler& l) { l.normal(glm::vec3(x, y, z)); }, &glNormal3f, x, y, z)) return;
   Context* ctx = currentContext();
   if (!ctx) return;
   if (ctx->insideBeginEnd || ctx->vbo.verticesBuffered) pipeline::normalBecomesVertexData(*ctx);
@@ -58,6 +62,17 @@ void normal3(T x, T y, T z) {
 extern "C" {
 
 GLAPI void APIENTRY glBegin(GLenum mode) {
+  // In a list: the glBegin/glEnd pairs become a vertex node; the errors are
+  // compiled (§5.4), as Mesa's save_Begin compiles them.
+  if (pipeline::ListCompiler* list = api::listCompiler(currentContext())) {
+    if (mode > GL_POLYGON)
+      list->recordError(*currentContext(), GL_INVALID_ENUM);
+    else if (list->insideBeginEnd())
+      list->recordError(*currentContext(), GL_INVALID_OPERATION);
+    else
+      list->begin(mode);
+    return;
+  }
   // Not a state change: Mesa keeps buffering vertices across glBegin.
   Context* ctx = api::contextForQuery();
   if (!ctx) return;
@@ -70,6 +85,7 @@ GLAPI void APIENTRY glBegin(GLenum mode) {
 }
 
 GLAPI void APIENTRY glEnd(void) {
+  if (api::compiledVertexData([](pipeline::ListCompiler& l) { l.end(); }, &glEnd)) return;
   Context* ctx = currentContext();
   if (!ctx) return;
   if (!ctx->insideBeginEnd) {

@@ -6,10 +6,12 @@
 #include <GL/gl.h>
 
 #include "framebuffer/framebuffer.h"
+#include "pipeline/display_list.h"
 #include "pipeline/vertex_batch.h"
 #include "state/attribs.h"
 #include "state/dirty.h"
 #include "state/lighting_attrib.h"
+#include "state/list_attrib.h"
 #include "state/matrix_stack.h"
 #include "vertex/light_constants.h"
 #include "vertex/vertex_stage.h"
@@ -35,6 +37,7 @@ class Context {
   HintAttrib hint;
   PixelStoreAttrib pixelStore;
   LightingAttrib lighting;
+  ListAttrib list;
   MatrixStack modelview{kMaxModelviewStackDepth};
   MatrixStack projection{kMaxProjectionStackDepth};
 
@@ -60,6 +63,9 @@ class Context {
   // The primitives of consecutive glBegin/glEnd pairs Mesa would draw as one
   // (pipeline/immediate_mode.h); drawn when a state change flushes them.
   VertexBatch pending;
+
+  // Display lists (GL 2.1 §5.4): per context for now.
+  pipeline::DisplayLists displayLists;
 
   // Errors (GL 2.1 §2.5): the first error is kept until glGetError reads it.
   void recordError(GLenum error) {

@@ -334,7 +334,7 @@ void replayVertexNode(Context& ctx, VertexNode& node) {
       if (!node.hasNormal && b.size() && b.normal[0] != ctx.current.normal)
         std::fill(b.normal.begin(), b.normal.end(), ctx.current.normal);
       b.materials[0] = ctx.lighting.material;
-      drawBatch(ctx, b);
+      drawBatch(ctx, b, primitive::PrimitiveState::Submission::kDisplayList);
     }
     ctx.vbo = Context::VboFormat();
     // The last vertex's attributes become current (Mesa's current_data).

@@ -41,13 +41,14 @@ primitive::PrimitiveState primitiveState(const Context& ctx, GLenum mode, bool s
 
 }  // namespace
 
-void drawBatch(Context& ctx, const VertexBatch& batch) {
+void drawBatch(Context& ctx, const VertexBatch& batch, primitive::PrimitiveState::Submission submission) {
   if (!ctx.framebuffer.bound() || batch.size() == 0) return;
   const vertex::VertexState& vs = ctx.validate();
   static thread_local ShadedVertices shaded;  // reused: no allocation per batch
   vertex::shadeBatch(vs, batch, shaded);
   primitive::PrimitiveState ps = primitiveState(ctx, batch.mode, shaded.hasSecondary);
   ps.constantPrimary = !vs.lighting && !ctx.vbo.colorIsVertexData;
+  ps.submission = submission;
   primitive::drawPrimitives(ps, shaded, ctx.framebuffer);
 }
 

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "pipeline/vertex_batch.h"
+#include "primitive/primitive.h"
 
 namespace glfixed {
 class Context;
@@ -10,6 +11,9 @@ class Context;
 
 namespace glfixed::pipeline {
 
-void drawBatch(Context& ctx, const VertexBatch& batch);
+// `submission`: how Mesa would receive the draw (primitive.h): display lists
+// draw indexed, which splits quads otherwise.
+void drawBatch(Context& ctx, const VertexBatch& batch,
+               primitive::PrimitiveState::Submission submission = primitive::PrimitiveState::Submission::kBeginEnd);
 
 }  // namespace glfixed::pipeline

@@ -481,14 +481,17 @@ GLAPI void APIENTRY glColorMaterial(GLenum face, GLenum mode) {
 }
 
 GLAPI void APIENTRY glShadeModel(GLenum mode) {
-  // Mesa compiles no glShadeModel that repeats the list's previous one
-  // (save_ShadeModel), so the vertices around it stay one node.
+  // Mesa's save_ShadeModel: in GL_COMPILE_AND_EXECUTE it runs first, before
+  // the vertices compiled so far are fed back (scene list_compile_and_execute),
+  // and a glShadeModel that repeats the list's previous one is not compiled,
+  // so the vertices around it stay one node (scene list_merge).
   pipeline::ListCompiler* list = api::listCompiler(currentContext());
-  if (list && !list->insideBeginEnd() && list->shadeModelRepeats(mode)) {
-    if (!list->executes()) return;  // executed, not compiled
-  } else if (api::compiled(&glShadeModel, mode)) {
+  if (list && !list->insideBeginEnd()) {
+    if (list->executes()) api::runUnrecorded(&glShadeModel, mode);
+    if (!list->shadeModelRepeats(mode)) api::compiled(&glShadeModel, mode);
     return;
   }
+  if (api::compiled(&glShadeModel, mode)) return;
   Context* ctx = api::contextForSetter();
   if (!ctx) return;
   if (mode != GL_FLAT && mode != GL_SMOOTH) {

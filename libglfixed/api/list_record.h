@@ -127,4 +127,15 @@ bool compiledAttribute(R (*fn)(P...), const A&... args) {
   return compiled(fn, args...);
 }
 
+// Runs a command now without recording it (for the few that Mesa executes
+// before it compiles them).
+template <typename R, typename... P, typename... A>
+void runUnrecorded(R (*fn)(P...), const A&... args) {
+  Context* ctx = currentContext();
+  if (!ctx) return;
+  ++ctx->displayLists.executing;
+  fn(args...);
+  --ctx->displayLists.executing;
+}
+
 }  // namespace glfixed::api

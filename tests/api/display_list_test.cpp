@@ -458,5 +458,92 @@ TEST_F(DisplayListTest, ListCanEndInsideBeginEnd) {
   EXPECT_EQ(GetInt(GL_LIST_INDEX), 0);
 }
 
+TEST_F(DisplayListTest, CallListBetweenBeginAndEndOfAList) {
+  // glCallList inside the list's own glBegin/glEnd: the rest of the
+  // primitive is compiled as commands (Mesa's fallback); the replay draws it.
+  glClearColor(0, 0, 0, 0);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glNewList(2, GL_COMPILE);
+  glVertex2f(1, 1);
+  glEndList();
+  glNewList(1, GL_COMPILE);
+  glColor3f(0, 1, 1);
+  glBegin(GL_QUADS);
+  glVertex2f(-1, -1);
+  glVertex2f(1, -1);
+  glCallList(2);
+  glVertex2f(-1, 1);
+  glEnd();
+  glEndList();
+  EXPECT_NO_GL_ERROR();
+  EXPECT_EQ(Pixel(32, 32)[1], 0);
+  glCallList(1);
+  EXPECT_NO_GL_ERROR();
+  const auto p = Pixel(32, 32);
+  EXPECT_EQ(p[0], 0);
+  EXPECT_EQ(p[1], 255);
+  EXPECT_EQ(p[2], 255);
+}
+
+TEST_F(DisplayListTest, ListEndingInsideBeginEndLeavesThePrimitiveOpen) {
+  glClearColor(0, 0, 0, 0);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glNewList(1, GL_COMPILE);
+  glColor3f(1, 0, 1);
+  glBegin(GL_TRIANGLES);
+  glVertex2f(-1, -1);
+  glVertex2f(3, -1);
+  glEndList();
+  EXPECT_NO_GL_ERROR();
+  glCallList(1);
+  glVertex2f(-1, 3);  // completes the triangle the list began
+  glEnd();
+  EXPECT_NO_GL_ERROR();
+  const auto p = Pixel(16, 16);
+  EXPECT_EQ(p[0], 255);
+  EXPECT_EQ(p[2], 255);
+}
+
+TEST_F(DisplayListTest, ListCommandsBetweenBeginAndEnd) {
+  DefineTranslation(1, 1);
+  glBegin(GL_TRIANGLES);
+  EXPECT_EQ(glGenLists(1), 0u);
+  glEnd();
+  EXPECT_GL_ERROR(GL_INVALID_OPERATION);
+  glBegin(GL_TRIANGLES);
+  glIsList(1);
+  glEnd();
+  EXPECT_GL_ERROR(GL_INVALID_OPERATION);
+  glBegin(GL_TRIANGLES);
+  glDeleteLists(1, 1);
+  glEnd();
+  EXPECT_GL_ERROR(GL_INVALID_OPERATION);
+  EXPECT_EQ(glIsList(1), GL_TRUE);
+  glBegin(GL_TRIANGLES);
+  glEndList();
+  glEnd();
+  EXPECT_GL_ERROR(GL_INVALID_OPERATION);
+  glBegin(GL_TRIANGLES);
+  glListBase(3);
+  glEnd();
+  EXPECT_GL_ERROR(GL_INVALID_OPERATION);
+  EXPECT_EQ(GetInt(GL_LIST_BASE), 0);
+  glBegin(GL_TRIANGLES);
+  glCallList(1);  // allowed (§2.6.3), but the list's glTranslate is not
+  glEnd();
+  EXPECT_GL_ERROR(GL_INVALID_OPERATION);
+  EXPECT_EQ(TranslationX(), 0.0f);
+}
+
+TEST_F(DisplayListTest, DeletedNamesAreGeneratedAgain) {
+  const GLuint first = glGenLists(4);
+  ASSERT_NE(first, 0u);
+  glDeleteLists(first, 4);
+  const GLuint again = glGenLists(4);
+  EXPECT_NE(again, 0u);
+  for (GLuint i = again; i < again + 4; ++i) EXPECT_EQ(glIsList(i), GL_TRUE);
+  EXPECT_NO_GL_ERROR();
+}
+
 }  // namespace
 }  // namespace glfx_test

@@ -12,7 +12,6 @@
 
 #include "api/api.h"
 #include "api/list_record.h"
-#include "api/list_record.h"
 #include "vertex/color_material.h"
 #include "vertex/light_constants.h"
 #include "vertex/lighting_matrix.h"
@@ -52,10 +51,15 @@ bool isColorPname(GLenum pname) { return pname == GL_AMBIENT || pname == GL_DIFF
 // list copies from the caller's array.
 size_t lightValueCount(GLenum pname) {
   switch (pname) {
-    case GL_AMBIENT: case GL_DIFFUSE: case GL_SPECULAR: case GL_POSITION: case GL_EMISSION:
-    case GL_AMBIENT_AND_DIFFUSE: case GL_LIGHT_MODEL_AMBIENT:
-      return 4;
-    case GL_SPOT_DIRECTION: case GL_COLOR_INDEXES: return 3;
+    case GL_AMBIENT:
+    case GL_DIFFUSE:
+    case GL_SPECULAR:
+    case GL_POSITION:
+    case GL_EMISSION:
+    case GL_AMBIENT_AND_DIFFUSE:
+    case GL_LIGHT_MODEL_AMBIENT: return 4;
+    case GL_SPOT_DIRECTION:
+    case GL_COLOR_INDEXES: return 3;
     default: return 1;
   }
 }
@@ -227,7 +231,24 @@ void lightModeliv(GLenum pname, const GLint* params) {
 // vertices that follow (§2.14.3), through a new snapshot in the batch.
 void materialfv(GLenum face, GLenum pname, const GLfloat* params) {
   // Between the list's glBegin and glEnd it changes the material per vertex.
+  // Outside, as Mesa's save_Materialfv: a bad face or pname is a compiled
+  // error; GL_COMPILE_AND_EXECUTE runs it before the vertices compiled so far
+  // are fed back; and it is not compiled if it repeats the list's last values.
   const size_t count = lightValueCount(pname);
+  if (pipeline::ListCompiler* list = api::listCompiler(currentContext()); list && !list->insideBeginEnd()) {
+    const bool validFace = face == GL_FRONT || face == GL_BACK || face == GL_FRONT_AND_BACK;
+    const bool validPname = pname == GL_EMISSION || pname == GL_AMBIENT || pname == GL_DIFFUSE ||
+                            pname == GL_SPECULAR || pname == GL_SHININESS || pname == GL_COLOR_INDEXES ||
+                            pname == GL_AMBIENT_AND_DIFFUSE;
+    if (!validFace || !validPname) {
+      list->recordError(*currentContext(), GL_INVALID_ENUM);
+      return;
+    }
+    if (list->executes()) api::runUnrecorded(&glMaterialfv, face, pname, params);
+    if (!list->materialRepeats(face, pname, params, int(count)))
+      api::compiled(&glMaterialfv, face, pname, api::copied(params, count));
+    return;
+  }
   if (api::compiledVertexData([&](pipeline::ListCompiler& l) { l.material(face, pname, params, int(count)); },
                               &glMaterialfv, face, pname, api::copied(params, count)))
     return;

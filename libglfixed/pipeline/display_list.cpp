@@ -167,6 +167,8 @@ void ListCompiler::normal(const glm::vec3& n) {
 }
 
 void ListCompiler::material(GLenum face, GLenum pname, const GLfloat* params, int count) {
+  // Mesa keeps these materials as vertex attributes: the first grows the format.
+  if (node_->materials.empty()) growFormat();
   ListMaterialCall m{static_cast<uint32_t>(node_->vertices.size()), face, pname, {0, 0, 0, 0}};
   std::copy(params, params + count, m.params);
   node_->materials.push_back(m);
@@ -191,6 +193,7 @@ void ListCompiler::growFormat() {
     if (keepFirst) next->vertices.appendVertices(old.vertices, open.first, open.first + 1);
     const uint32_t tail = keepFirst ? carry - 1 : carry;
     next->vertices.appendVertices(old.vertices, last - tail, last);
+    next->carried = carry;
     ListPrimitive cont;
     cont.mode = open.mode;
     cont.begin = false;
@@ -218,6 +221,33 @@ bool ListCompiler::shadeModelRepeats(GLenum mode) {
   if (knownShadeModel_ == mode) return true;
   knownShadeModel_ = mode;
   return false;
+}
+
+bool ListCompiler::materialRepeats(GLenum face, GLenum pname, const GLfloat* params, int count) {
+  uint32_t components = 0;  // bits of the component order above
+  switch (pname) {
+    case GL_EMISSION: components = 1; break;
+    case GL_AMBIENT: components = 2; break;
+    case GL_DIFFUSE: components = 4; break;
+    case GL_SPECULAR: components = 8; break;
+    case GL_SHININESS: components = 16; break;
+    case GL_COLOR_INDEXES: components = 32; break;
+    case GL_AMBIENT_AND_DIFFUSE: components = 6; break;
+    default: return false;
+  }
+  bool repeats = true;
+  for (int f = 0; f < 2; ++f) {
+    if ((f == 0 && face == GL_BACK) || (f == 1 && face == GL_FRONT)) continue;
+    for (int c = 0; c < 6; ++c) {
+      if (!(components & (1u << c))) continue;
+      KnownMaterial& k = knownMaterial_[f * 6 + c];
+      if (k.count == count && std::equal(params, params + count, k.v)) continue;
+      repeats = false;
+      k.count = count;
+      std::copy(params, params + count, k.v);
+    }
+  }
+  return repeats;
 }
 
 void ListCompiler::endNode() {
@@ -303,7 +333,8 @@ void loopBackVertexNode(const VertexNode& node) {
   };
   for (const ListPrimitive& p : node.primitives) {
     if (p.begin) glBegin(p.mode);
-    for (uint32_t i = p.first; i < p.first + p.count; ++i) {
+    const uint32_t skip = p.begin ? 0 : node.carried;
+    for (uint32_t i = p.first + skip; i < p.first + p.count; ++i) {
       materialsUpTo(i);
       if (node.hasColor) glColor4fv(&v.color[i][0]);
       if (node.hasNormal) glNormal3fv(&v.normal[i][0]);

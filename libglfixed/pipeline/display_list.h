@@ -66,6 +66,9 @@ struct VertexNode {
   std::vector<VertexBatch> draws;            // after the second merge: what a replay draws
   bool hasColor = false, hasNormal = false;  // the node's vertex format
   bool loopback = false;                     // replayed through the immediate-mode entry points
+  // Vertices carried over from the previous node to continue its open
+  // primitive: feeding back skips them (they were fed with that node).
+  uint32_t carried = 0;
   std::vector<ListMaterialCall> materials;
   // Other current-attribute calls between glBegin and glEnd (texture
   // coordinates, ...): no stage reads them per vertex yet; run after the node.
@@ -107,7 +110,13 @@ class ListCompiler {
   // Mesa skips compiling a glShadeModel that repeats the list's last one
   // (save_ShadeModel); forgotten after a glCallList, whose effect is unknown.
   bool shadeModelRepeats(GLenum mode);
-  void forgetKnownState() { knownShadeModel_ = 0; }
+  // The same for glMaterial outside glBegin/glEnd (save_Materialfv): true if
+  // every component it sets repeats the value the list last compiled.
+  bool materialRepeats(GLenum face, GLenum pname, const GLfloat* params, int count);
+  void forgetKnownState() {
+    knownShadeModel_ = 0;
+    for (auto& m : knownMaterial_) m.count = 0;
+  }
 
   // glEndList: the last node ends; the list is done.
   std::shared_ptr<DisplayList> finish();
@@ -124,6 +133,12 @@ class ListCompiler {
   glm::vec4 color_{1, 1, 1, 1};
   glm::vec3 normal_{0, 0, 1};
   GLenum knownShadeModel_ = 0;
+  struct KnownMaterial {
+    int count = 0;  // 0: unknown
+    GLfloat v[4];
+  };
+  // [face * 6 + component]: emission, ambient, diffuse, specular, shininess, indexes.
+  KnownMaterial knownMaterial_[12];
 };
 
 // The lists of a context (later shared between GLX contexts).

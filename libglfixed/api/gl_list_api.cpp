@@ -89,7 +89,10 @@ GLAPI void APIENTRY glNewList(GLuint list, GLenum mode) {
 }
 
 GLAPI void APIENTRY glEndList(void) {
-  Context* ctx = api::contextForQuery();
+  // While a list compiles, glBegin/glEnd go to the list: the immediate mode is
+  // between glBegin and glEnd only while GL_COMPILE_AND_EXECUTE feeds back a
+  // primitive the list has not ended yet, which finishing the list ends.
+  Context* ctx = api::context();
   if (!ctx) return;
   if (!ctx->displayLists.compiler) {
     ctx->recordError(GL_INVALID_OPERATION);

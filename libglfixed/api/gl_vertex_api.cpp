@@ -13,9 +13,12 @@ namespace {
 using api::normalized;
 
 void addVertex(float x, float y, float z, float w) {
-  if (api::compiledVertexData([&](pipeline::ListCompiler& l) { l.vertex(glm::vec4(x, y, z, w)); }, &glVertex4f, x, y, z, w)) return;
   Context* ctx = currentContext();
   if (!ctx) return;
+  if (ctx->displayLists.compiler &&
+      api::compiledVertexData([&](pipeline::ListCompiler& l) { l.vertex(glm::vec4(x, y, z, w)); },
+                              &glVertex4f, x, y, z, w))
+    return;
   if (!ctx->insideBeginEnd) return;  // GL 2.1 §2.6.3: undefined outside Begin/End; ignored
   VertexBatch& b = ctx->batch;
   b.position.emplace_back(x, y, z, w);
@@ -25,9 +28,12 @@ void addVertex(float x, float y, float z, float w) {
 }
 
 void color(float r, float g, float b, float a) {
-  if (api::compiledVertexData([&](pipeline::ListCompiler& l) { l.color(glm::vec4(r, g, b, a)); }, &glColor4f, r, g, b, a)) return;
   Context* ctx = currentContext();
   if (!ctx) return;
+  if (ctx->displayLists.compiler &&
+      api::compiledVertexData([&](pipeline::ListCompiler& l) { l.color(glm::vec4(r, g, b, a)); },
+                              &glColor4f, r, g, b, a))
+    return;
   if (ctx->insideBeginEnd || ctx->vbo.verticesBuffered) pipeline::colorBecomesVertexData(*ctx);
   ctx->current.color = glm::vec4(r, g, b, a);
   if (!ctx->insideBeginEnd && ctx->lighting.colorMaterial) {
@@ -46,9 +52,12 @@ void color4(T r, T g, T b, T a) {
 }
 
 void normal(float x, float y, float z) {
-  if (api::compiledVertexData([&](pipeline::ListCompiler& l) { l.normal(glm::vec3(x, y, z)); }, &glNormal3f, x, y, z)) return;
   Context* ctx = currentContext();
   if (!ctx) return;
+  if (ctx->displayLists.compiler &&
+      api::compiledVertexData([&](pipeline::ListCompiler& l) { l.normal(glm::vec3(x, y, z)); },
+                              &glNormal3f, x, y, z))
+    return;
   if (ctx->insideBeginEnd || ctx->vbo.verticesBuffered) pipeline::normalBecomesVertexData(*ctx);
   ctx->current.normal = glm::vec3(x, y, z);
 }

@@ -545,5 +545,27 @@ TEST_F(DisplayListTest, DeletedNamesAreGeneratedAgain) {
   EXPECT_NO_GL_ERROR();
 }
 
+TEST_F(DisplayListTest, CompileAndExecuteWithAColourThatGrowsTheFormatEndsCleanly) {
+  // The glColor inside the second glBegin/glEnd pair grows the node's vertex
+  // format: the node ends with that pair open, and is fed back at once.
+  glNewList(1, GL_COMPILE_AND_EXECUTE);
+  for (int i = 0; i < 4; ++i) {
+    if (i % 2 == 0) glColor3f(0.3f, 0.7f, 0.3f);
+    glBegin(GL_QUAD_STRIP);
+    if (i % 2 == 1) glColor3f(0.7f, 0.3f, 0.3f);
+    glVertex2f(-1, -1);
+    glVertex2f(-1, 1);
+    glVertex2f(1, -1);
+    glVertex2f(1, 1);
+    glEnd();
+  }
+  glEndList();
+  EXPECT_NO_GL_ERROR();
+  EXPECT_EQ(GetInt(GL_LIST_INDEX), 0);
+  glCallList(1);
+  EXPECT_NO_GL_ERROR();
+  EXPECT_EQ(GetFloats<4>(GL_CURRENT_COLOR)[0], 0.7f);
+}
+
 }  // namespace
 }  // namespace glfx_test

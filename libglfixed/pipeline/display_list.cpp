@@ -291,12 +291,12 @@ GLuint DisplayLists::genLists(GLsizei range) {
   GLuint first = 1;
   for (;;) {
     GLuint n = 0;
-    while (n < static_cast<GLuint>(range) && lists_.count(first + n) == 0) ++n;
+    while (n < static_cast<GLuint>(range) && lists_->count(first + n) == 0) ++n;
     if (n == static_cast<GLuint>(range)) break;
     first += n + 1;
     if (first == 0 || first > 0xFFFFFFFFu - static_cast<GLuint>(range)) return 0;
   }
-  for (GLuint i = 0; i < static_cast<GLuint>(range); ++i) lists_[first + i] = std::make_shared<DisplayList>();
+  for (GLuint i = 0; i < static_cast<GLuint>(range); ++i) (*lists_)[first + i] = std::make_shared<DisplayList>();
   return first;
 }
 
@@ -304,14 +304,14 @@ void DisplayLists::deleteLists(GLuint first, GLsizei range) {
   for (GLsizei i = 0; i < range; ++i) {
     const GLuint name = first + static_cast<GLuint>(i);
     if (name < first) break;  // wrapped around
-    lists_.erase(name);
+    lists_->erase(name);
   }
 }
 
 void DisplayLists::call(GLuint name) {
   if (callDepth_ >= kMaxListNesting) return;  // deeper calls are ignored (§5.4)
-  auto it = lists_.find(name);
-  if (it == lists_.end()) return;                  // a list that does not exist: nothing happens
+  auto it = lists_->find(name);
+  if (it == lists_->end()) return;                  // a list that does not exist: nothing happens
   std::shared_ptr<DisplayList> list = it->second;  // kept alive while it runs
   ++callDepth_;
   ++executing;

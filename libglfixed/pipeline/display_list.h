@@ -141,13 +141,17 @@ class ListCompiler {
   KnownMaterial knownMaterial_[12];
 };
 
-// The lists of a context (later shared between GLX contexts).
+// The lists of a context, shared with the contexts created to share them
+// (OSMesaCreateContext's sharelist). As GL requires, an application that uses
+// shared lists from several threads at once synchronises itself: a replay
+// updates a node's attributes taken from the current values in place.
 class DisplayLists {
  public:
+  void shareWith(const DisplayLists& other) { lists_ = other.lists_; }
   GLuint genLists(GLsizei range);
-  bool isList(GLuint name) const { return lists_.count(name) != 0; }
+  bool isList(GLuint name) const { return lists_->count(name) != 0; }
   void deleteLists(GLuint first, GLsizei range);
-  void install(GLuint name, std::shared_ptr<DisplayList> list) { lists_[name] = std::move(list); }
+  void install(GLuint name, std::shared_ptr<DisplayList> list) { (*lists_)[name] = std::move(list); }
   // glCallList: runs list `name` if it exists and the nesting allows it.
   void call(GLuint name);
 
@@ -156,7 +160,8 @@ class DisplayLists {
   int executing = 0;
 
  private:
-  std::unordered_map<GLuint, std::shared_ptr<DisplayList>> lists_;
+  using Names = std::unordered_map<GLuint, std::shared_ptr<DisplayList>>;
+  std::shared_ptr<Names> lists_ = std::make_shared<Names>();
   int callDepth_ = 0;
 };
 

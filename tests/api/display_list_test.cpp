@@ -567,5 +567,27 @@ TEST_F(DisplayListTest, CompileAndExecuteWithAColourThatGrowsTheFormatEndsCleanl
   EXPECT_EQ(GetFloats<4>(GL_CURRENT_COLOR)[0], 0.7f);
 }
 
+TEST_F(DisplayListTest, ContextsCreatedToShareListsShareThem) {
+  DefineTranslation(7, 3);
+  OSMesaContext sharing = OSMesaCreateContextExt(OSMESA_RGBA, 24, 0, 0, ctx_);
+  OSMesaContext alone = OSMesaCreateContextExt(OSMESA_RGBA, 24, 0, 0, NULL);
+  ASSERT_NE(sharing, nullptr);
+  ASSERT_NE(alone, nullptr);
+  std::vector<unsigned char> buffer(kWidth * kHeight * 4);
+  ASSERT_EQ(OSMesaMakeCurrent(sharing, buffer.data(), GL_UNSIGNED_BYTE, kWidth, kHeight), GL_TRUE);
+  EXPECT_EQ(glIsList(7), GL_TRUE);
+  glCallList(7);
+  EXPECT_EQ(TranslationX(), 3.0f);
+  DefineTranslation(8, 5);  // defined here, seen by the first context
+  ASSERT_EQ(OSMesaMakeCurrent(alone, buffer.data(), GL_UNSIGNED_BYTE, kWidth, kHeight), GL_TRUE);
+  EXPECT_EQ(glIsList(7), GL_FALSE);
+  ASSERT_EQ(OSMesaMakeCurrent(ctx_, buffer_, GL_UNSIGNED_BYTE, kWidth, kHeight), GL_TRUE);
+  EXPECT_EQ(glIsList(8), GL_TRUE);
+  OSMesaDestroyContext(sharing);
+  OSMesaDestroyContext(alone);
+  EXPECT_EQ(glIsList(8), GL_TRUE);  // the lists outlive the context that made them
+  EXPECT_NO_GL_ERROR();
+}
+
 }  // namespace
 }  // namespace glfx_test

@@ -167,8 +167,15 @@ void ListCompiler::normal(const glm::vec3& n) {
 }
 
 void ListCompiler::material(GLenum face, GLenum pname, const GLfloat* params, int count) {
-  // Mesa keeps these materials as vertex attributes: the first grows the format.
-  if (node_->materials.empty()) growFormat();
+  // Mesa keeps these materials as vertex attributes: the first grows the
+  // format. This node is fed back through immediate mode, and so is the rest
+  // of its glBegin/glEnd in the nodes before it (growFormat).
+  if (node_->materials.empty()) {
+    const bool grownBefore = !grownChain_.empty();  // a colour or normal cut this glBegin/glEnd already
+    growFormat(!grownBefore);
+    if (grownBefore)
+      for (auto& n : grownChain_) n->loopback = true;
+  }
   ListMaterialCall m{static_cast<uint32_t>(node_->vertices.size()), face, pname, {0, 0, 0, 0}};
   std::copy(params, params + count, m.params);
   node_->materials.push_back(m);
@@ -178,7 +185,7 @@ void ListCompiler::material(GLenum face, GLenum pname, const GLfloat* params, in
 // An attribute enters the vertex format of a node that already has vertices
 // (Mesa's upgrade_vertex): the node ends, and the unfinished vertices of the
 // open primitive start the next node, which continues the primitive.
-void ListCompiler::growFormat() {
+void ListCompiler::growFormat(bool feedOpenPrimitive) {
   VertexNode& old = *node_;
   if (old.vertices.size() == 0) return;
   auto next = std::make_shared<VertexNode>();
@@ -199,12 +206,25 @@ void ListCompiler::growFormat() {
     cont.begin = false;
     next->primitives.push_back(cont);
   }
+  if (insideBeginEnd_ && feedOpenPrimitive) {
+    const ListPrimitive open = old.primitives.back();
+    old.primitives.pop_back();
+    old.feedsOpenPrimitive = true;
+    old.openMode = open.mode;
+    old.openFirst = open.first;
+  }
   // Compile the old node with the open primitive left unfinished.
   const bool inside = insideBeginEnd_;
+  std::shared_ptr<VertexNode> ended = node_;
+  std::vector<std::shared_ptr<VertexNode>> chain = std::move(grownChain_);
   insideBeginEnd_ = false;
   endNode();
   insideBeginEnd_ = inside;
   node_ = next;
+  if (inside) {
+    grownChain_ = std::move(chain);
+    grownChain_.push_back(ended);
+  }
 }
 
 void ListCompiler::fallBackToCommands() {
@@ -253,7 +273,8 @@ bool ListCompiler::materialRepeats(GLenum face, GLenum pname, const GLfloat* par
 void ListCompiler::endNode() {
   if (insideBeginEnd_) return;  // the node continues (glMaterial inside glBegin/glEnd)
   std::shared_ptr<VertexNode> node = node_;
-  if (node->primitives.empty() && node->attributeCalls.empty()) return;
+  grownChain_.clear();
+  if (node->primitives.empty() && node->attributeCalls.empty() && !node->feedsOpenPrimitive) return;
   node_ = std::make_shared<VertexNode>();
   node->primitives = mergeLikeImmediateMode(node->primitives);
   for (IndexedDraw& d : mergeIntoDraws(node->primitives)) {
@@ -296,7 +317,8 @@ GLuint DisplayLists::genLists(GLsizei range) {
     first += n + 1;
     if (first == 0 || first > 0xFFFFFFFFu - static_cast<GLuint>(range)) return 0;
   }
-  for (GLuint i = 0; i < static_cast<GLuint>(range); ++i) (*lists_)[first + i] = std::make_shared<DisplayList>();
+  for (GLuint i = 0; i < static_cast<GLuint>(range); ++i)
+    (*lists_)[first + i] = std::make_shared<DisplayList>();
   return first;
 }
 
@@ -311,7 +333,7 @@ void DisplayLists::deleteLists(GLuint first, GLsizei range) {
 void DisplayLists::call(GLuint name) {
   if (callDepth_ >= kMaxListNesting) return;  // deeper calls are ignored (§5.4)
   auto it = lists_->find(name);
-  if (it == lists_->end()) return;                  // a list that does not exist: nothing happens
+  if (it == lists_->end()) return;                 // a list that does not exist: nothing happens
   std::shared_ptr<DisplayList> list = it->second;  // kept alive while it runs
   ++callDepth_;
   ++executing;
@@ -321,6 +343,18 @@ void DisplayLists::call(GLuint name) {
 }
 
 // ---- Replay -----------------------------------------------------------------
+
+namespace {
+void feedOpenPrimitive(const VertexNode& node) {
+  const VertexBatch& v = node.vertices;
+  glBegin(node.openMode);
+  for (uint32_t i = node.openFirst; i < v.size(); ++i) {
+    if (node.hasColor) glColor4fv(&v.color[i][0]);
+    if (node.hasNormal) glNormal3fv(&v.normal[i][0]);
+    glVertex4fv(&v.position[i][0]);
+  }
+}
+}  // namespace
 
 void loopBackVertexNode(const VertexNode& node) {
   const VertexBatch& v = node.vertices;
@@ -343,6 +377,7 @@ void loopBackVertexNode(const VertexNode& node) {
     materialsUpTo(p.first + p.count);
     if (p.end) glEnd();
   }
+  if (node.feedsOpenPrimitive) feedOpenPrimitive(node);
 }
 
 void replayVertexNode(Context& ctx, VertexNode& node) {
@@ -379,6 +414,7 @@ void replayVertexNode(Context& ctx, VertexNode& node) {
     }
   }
   for (const ListCommand& call : node.attributeCalls) call();
+  if (node.feedsOpenPrimitive && !node.loopback && !ctx.insideBeginEnd) feedOpenPrimitive(node);
 }
 
 }  // namespace glfixed::pipeline

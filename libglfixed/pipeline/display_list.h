@@ -69,6 +69,13 @@ struct VertexNode {
   // Vertices carried over from the previous node to continue its open
   // primitive: feeding back skips them (they were fed with that node).
   uint32_t carried = 0;
+  // The node ends inside a glBegin/glEnd whose rest is fed back through
+  // immediate mode (a glMaterial between glBegin and glEnd follows): its
+  // open primitive, vertices [openFirst, end), is not one of its draws but
+  // is fed after them, glBegin included.
+  bool feedsOpenPrimitive = false;
+  GLenum openMode = GL_POINTS;
+  uint32_t openFirst = 0;
   std::vector<ListMaterialCall> materials;
   // Other current-attribute calls between glBegin and glEnd (texture
   // coordinates, ...): no stage reads them per vertex yet; run after the node.
@@ -123,7 +130,7 @@ class ListCompiler {
 
  private:
   void endNode();
-  void growFormat();
+  void growFormat(bool feedOpenPrimitive = false);
 
   GLuint name_;
   GLenum mode_;
@@ -132,6 +139,9 @@ class ListCompiler {
   bool insideBeginEnd_ = false;
   glm::vec4 color_{1, 1, 1, 1};
   glm::vec3 normal_{0, 0, 1};
+  // The nodes a format growth ended inside the glBegin/glEnd that goes on in
+  // node_: if a node of the chain is fed back on replay, they all must be.
+  std::vector<std::shared_ptr<VertexNode>> grownChain_;
   GLenum knownShadeModel_ = 0;
   struct KnownMaterial {
     int count = 0;  // 0: unknown

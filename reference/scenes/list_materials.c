@@ -1,9 +1,9 @@
 /* glMaterial in lists, lit: in GL_COMPILE_AND_EXECUTE Mesa runs a glMaterial
  * before it feeds back the vertices compiled before it (so they are lit with
  * the new material), and a glMaterial that repeats the list's last values is
- * not compiled. The list runs while compiled (top rows) and again when
- * called. (glMaterial between glBegin and glEnd in a list: not here, see
- * MESA_FACTS.md, display lists.) */
+ * not compiled; a glMaterial between glBegin and glEnd is a vertex attribute
+ * that ends the vertex node before it. The list runs while compiled (top
+ * rows) and again when called. */
 #include "scene.h"
 
 static void quad(float x, float y, float s)
@@ -38,6 +38,15 @@ int main(int argc, char **argv)
     glMaterialfv(GL_FRONT, GL_SPECULAR, spec);
     glMaterialf(GL_FRONT, GL_SHININESS, 20);
     quad(76, 4, 16);
+    glBegin(GL_QUADS);                            /* per-vertex material */
+    glNormal3f(0, 0, 1);
+    glVertex2f(100, 4);
+    glMaterialfv(GL_FRONT, GL_DIFFUSE, teal);
+    glVertex2f(116, 4);
+    glVertex2f(116, 20);
+    glMaterialfv(GL_FRONT, GL_DIFFUSE, red);
+    glVertex2f(100, 20);
+    glEnd();
     glMaterialfv(GL_FRONT, GL_DIFFUSE, teal);
     quad(124, 4, 16);
     glTranslatef(0, 24, 0);
@@ -47,6 +56,7 @@ int main(int argc, char **argv)
     glEndList();
 
     glLoadIdentity();
+    glTranslatef(0, -50, 0);  /* the replay below what the compile drew */
     glMaterialfv(GL_FRONT, GL_SPECULAR, spec);
     glCallList(1);
     return scene_end();

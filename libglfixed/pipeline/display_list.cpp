@@ -307,7 +307,11 @@ std::shared_ptr<DisplayList> ListCompiler::finish() {
 // ---- DisplayLists -------------------------------------------------------------
 
 GLuint DisplayLists::genLists(GLsizei range) {
-  if (range <= 0) return 0;
+  // GL 2.1 §5.4: 0 when no run of `range` unused names is available; here
+  // also for more than a million at once, whose empty lists alone would
+  // take gigabytes.
+  constexpr GLsizei kMaxRange = 1 << 20;
+  if (range <= 0 || range > kMaxRange) return 0;
   // The first run of `range` unused names above every used one, or any gap.
   GLuint first = 1;
   for (;;) {
@@ -323,11 +327,15 @@ GLuint DisplayLists::genLists(GLsizei range) {
 }
 
 void DisplayLists::deleteLists(GLuint first, GLsizei range) {
-  for (GLsizei i = 0; i < range; ++i) {
-    const GLuint name = first + static_cast<GLuint>(i);
-    if (name < first) break;  // wrapped around
-    lists_->erase(name);
+  if (range <= 0) return;
+  const uint64_t last = static_cast<uint64_t>(first) + static_cast<uint64_t>(range);  // one past
+  if (static_cast<uint64_t>(range) > lists_->size()) {  // a huge range: look at the lists instead
+    for (auto it = lists_->begin(); it != lists_->end();)
+      it = (it->first >= first && it->first < last) ? lists_->erase(it) : std::next(it);
+    return;
   }
+  for (uint64_t name = first; name < last && name <= 0xFFFFFFFFu; ++name)
+    lists_->erase(static_cast<GLuint>(name));
 }
 
 void DisplayLists::call(GLuint name) {

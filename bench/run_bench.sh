@@ -7,15 +7,21 @@ cd "$(dirname "$0")/.."
 build="${1:-build}"
 frames="${2:-20}"
 exe="$build/bench/bench_lit_spheres"
-for what in geometry fill; do
+declare -A ms
+for what in geometry list fill; do
   mesa=$(env -u LD_LIBRARY_PATH "$exe" "$frames" "$what")
   ours=$(LD_LIBRARY_PATH="$build/dropin" "$exe" "$frames" "$what")
   echo "Mesa       $mesa"
   echo "libglfixed $ours"
   m=$(sed -E 's/.* ([0-9.]+) ms\/frame/\1/' <<<"$mesa")
   o=$(sed -E 's/.* ([0-9.]+) ms\/frame/\1/' <<<"$ours")
+  ms[mesa_$what]=$m
+  ms[ours_$what]=$o
   awk -v m="$m" -v o="$o" -v w="$what" 'BEGIN { printf "%s: libglfixed is %.2fx the speed of Mesa\n\n", w, m / o }'
 done
+# The display list replay of the geometry against the same immediate-mode calls.
+awk -v i="${ms[ours_geometry]}" -v l="${ms[ours_list]}" -v mi="${ms[mesa_geometry]}" -v ml="${ms[mesa_list]}" \
+  'BEGIN { printf "list replay vs immediate mode: libglfixed %.2fx, Mesa %.2fx (speed)\n\n", i / l, mi / ml }'
 # Whole-process start-up: load, context, one frame, exit.
 start() { local t0 t1; t0=$(date +%s%N); "$@" >/dev/null; t1=$(date +%s%N); echo $(( (t1 - t0) / 1000000 )); }
 m=$(start env -u LD_LIBRARY_PATH "$exe" 1 geometry)

@@ -3,6 +3,8 @@
 // flag. They are state now; the stages that use them come with texturing, fog
 // and polygon modes.
 #include "api/api.h"
+#include "api/list_record.h"
+#include "api/list_record.h"
 #include "api/normalized.h"
 
 using namespace glfixed;
@@ -14,6 +16,7 @@ constexpr int kMaxTextureCoords = 8;
 using api::normalized;
 
 void texCoord(GLenum unit, float s, float t, float r, float q) {
+  if (api::compiledAttribute(&glMultiTexCoord4f, unit, s, t, r, q)) return;
   Context* ctx = currentContext();
   if (!ctx) return;
   if (unit < GL_TEXTURE0 || unit >= GL_TEXTURE0 + kMaxTextureCoords) {
@@ -24,16 +27,19 @@ void texCoord(GLenum unit, float s, float t, float r, float q) {
 }
 
 void secondaryColor(float r, float g, float b) {
+  if (api::compiledAttribute(&glSecondaryColor3f, r, g, b)) return;
   Context* ctx = currentContext();
   if (ctx) ctx->current.secondaryColor = glm::vec4(r, g, b, 1.0f);
 }
 
 void fogCoord(float f) {
+  if (api::compiledAttribute(&glFogCoordf, f)) return;
   Context* ctx = currentContext();
   if (ctx) ctx->current.fogCoord = f;
 }
 
 void colorIndex(float i) {
+  if (api::compiledAttribute(&glIndexf, i)) return;
   Context* ctx = currentContext();
   if (ctx) ctx->current.colorIndex = i;
 }
@@ -137,6 +143,7 @@ GLAPI void APIENTRY glIndexub(GLubyte c) { colorIndex(static_cast<float>(c)); }
 GLAPI void APIENTRY glIndexubv(const GLubyte* c) { if (c) colorIndex(static_cast<float>(*c)); }
 
 GLAPI void APIENTRY glEdgeFlag(GLboolean flag) {
+  if (api::compiledAttribute(&glEdgeFlag, flag)) return;
   Context* ctx = currentContext();
   if (ctx) ctx->current.edgeFlag = flag != GL_FALSE;
 }

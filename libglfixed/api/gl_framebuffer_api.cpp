@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "api/api.h"
+#include "api/list_record.h"
 #include "framebuffer/read_pixels.h"
 
 using namespace glfixed;
@@ -25,6 +26,7 @@ GLint mesaRoundToInt(float f) {
 extern "C" {
 
 GLAPI void APIENTRY glClear(GLbitfield mask) {
+  if (api::compiled(&glClear, mask)) return;
   Context* ctx = api::contextFlushed();
   if (!ctx) return;
   const GLbitfield known = GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT | GL_ACCUM_BUFFER_BIT;

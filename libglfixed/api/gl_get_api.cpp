@@ -202,6 +202,18 @@ bool queryCoreState(Context& ctx, GLenum pname, StateValue& out) {
     case GL_CURRENT_FOG_COORD: out.set({ctx.current.fogCoord}); return true;
     case GL_CURRENT_INDEX: out.set({ctx.current.colorIndex}); return true;
     case GL_EDGE_FLAG: out.set({double(ctx.current.edgeFlag)}); return true;
+    case GL_LIST_BASE: out.set({double(ctx.list.base)}); return true;
+    case GL_LIST_INDEX: {  // the list being compiled, or 0
+      const auto& c = ctx.displayLists.compiler;
+      out.set({c ? double(c->name()) : 0.0});
+      return true;
+    }
+    case GL_LIST_MODE: {
+      const auto& c = ctx.displayLists.compiler;
+      out.set({c ? double(c->mode()) : 0.0});
+      return true;
+    }
+    case GL_MAX_LIST_NESTING: out.set({double(kMaxListNesting)}); return true;
     case GL_SUBPIXEL_BITS: out.set({double(kSubpixelBits)}); return true;
     case GL_RED_BITS: case GL_GREEN_BITS: case GL_BLUE_BITS: out.set({8.0}); return true;
     case GL_ALPHA_BITS: out.set({hasAlpha ? 8.0 : 0.0}); return true;

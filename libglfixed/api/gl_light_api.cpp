@@ -11,6 +11,7 @@
 #include <cstdint>
 
 #include "api/api.h"
+#include "api/list_record.h"
 #include "vertex/color_material.h"
 #include "vertex/light_constants.h"
 #include "vertex/lighting_matrix.h"
@@ -46,7 +47,25 @@ bool isColorPname(GLenum pname) { return pname == GL_AMBIENT || pname == GL_DIFF
 
 // ---- glLight ---------------------------------------------------------------
 
+// How many values a glLight, glLightModel or glMaterial pname has: what a
+// list copies from the caller's array.
+size_t lightValueCount(GLenum pname) {
+  switch (pname) {
+    case GL_AMBIENT:
+    case GL_DIFFUSE:
+    case GL_SPECULAR:
+    case GL_POSITION:
+    case GL_EMISSION:
+    case GL_AMBIENT_AND_DIFFUSE:
+    case GL_LIGHT_MODEL_AMBIENT: return 4;
+    case GL_SPOT_DIRECTION:
+    case GL_COLOR_INDEXES: return 3;
+    default: return 1;
+  }
+}
+
 void lightfv(GLenum light, GLenum pname, const GLfloat* params) {
+  if (api::compiled(&glLightfv, light, pname, api::copied(params, lightValueCount(pname)))) return;
   Context* ctx = api::contextForSetter();
   if (!ctx) return;
   const int i = lightIndex(light);
@@ -161,6 +180,7 @@ const Light* lightForQuery(Context* ctx, GLenum light, GLenum pname, GLfloat* va
 // ---- glLightModel ----------------------------------------------------------
 
 void lightModelfv(GLenum pname, const GLfloat* params) {
+  if (api::compiled(&glLightModelfv, pname, api::copied(params, lightValueCount(pname)))) return;
   Context* ctx = api::contextForSetter();
   if (!ctx) return;
   LightModel& m = ctx->lighting.model;
@@ -210,6 +230,28 @@ void lightModeliv(GLenum pname, const GLint* params) {
 // Allowed between glBegin and glEnd: then it changes the material of the
 // vertices that follow (§2.14.3), through a new snapshot in the batch.
 void materialfv(GLenum face, GLenum pname, const GLfloat* params) {
+  // Between the list's glBegin and glEnd it changes the material per vertex.
+  // Outside, as Mesa's save_Materialfv: a bad face or pname is a compiled
+  // error; GL_COMPILE_AND_EXECUTE runs it before the vertices compiled so far
+  // are fed back; and it is not compiled if it repeats the list's last values.
+  const size_t count = lightValueCount(pname);
+  if (pipeline::ListCompiler* list = api::listCompiler(currentContext()); list && !list->insideBeginEnd()) {
+    const bool validFace = face == GL_FRONT || face == GL_BACK || face == GL_FRONT_AND_BACK;
+    const bool validPname = pname == GL_EMISSION || pname == GL_AMBIENT || pname == GL_DIFFUSE ||
+                            pname == GL_SPECULAR || pname == GL_SHININESS || pname == GL_COLOR_INDEXES ||
+                            pname == GL_AMBIENT_AND_DIFFUSE;
+    if (!validFace || !validPname) {
+      list->recordError(*currentContext(), GL_INVALID_ENUM);
+      return;
+    }
+    if (list->executes()) api::runUnrecorded(&glMaterialfv, face, pname, params);
+    if (!list->materialRepeats(face, pname, params, int(count)))
+      api::compiled(&glMaterialfv, face, pname, api::copied(params, count));
+    return;
+  }
+  if (api::compiledVertexData([&](pipeline::ListCompiler& l) { l.material(face, pname, params, int(count)); },
+                              &glMaterialfv, face, pname, api::copied(params, count)))
+    return;
   Context* ctx = currentContext();
   if (!ctx) return;
   // Outside glBegin/glEnd Mesa's vbo takes the material as a vertex attribute:
@@ -443,6 +485,7 @@ GLAPI void APIENTRY glGetMaterialiv(GLenum face, GLenum pname, GLint* params) {
 }
 
 GLAPI void APIENTRY glColorMaterial(GLenum face, GLenum mode) {
+  if (api::compiled(&glColorMaterial, face, mode)) return;
   Context* ctx = api::contextForSetter();
   if (!ctx) return;
   if (vertex::colorMaterialBits(face, mode) == 0) {
@@ -459,6 +502,17 @@ GLAPI void APIENTRY glColorMaterial(GLenum face, GLenum mode) {
 }
 
 GLAPI void APIENTRY glShadeModel(GLenum mode) {
+  // Mesa's save_ShadeModel: in GL_COMPILE_AND_EXECUTE it runs first, before
+  // the vertices compiled so far are fed back (scene list_compile_and_execute),
+  // and a glShadeModel that repeats the list's previous one is not compiled,
+  // so the vertices around it stay one node (scene list_merge).
+  pipeline::ListCompiler* list = api::listCompiler(currentContext());
+  if (list && !list->insideBeginEnd()) {
+    if (list->executes()) api::runUnrecorded(&glShadeModel, mode);
+    if (!list->shadeModelRepeats(mode)) api::compiled(&glShadeModel, mode);
+    return;
+  }
+  if (api::compiled(&glShadeModel, mode)) return;
   Context* ctx = api::contextForSetter();
   if (!ctx) return;
   if (mode != GL_FLAT && mode != GL_SMOOTH) {

@@ -3,6 +3,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "api/api.h"
+#include "api/list_record.h"
 
 using namespace glfixed;
 
@@ -100,6 +101,7 @@ void scale(float x, float y, float z) {
 extern "C" {
 
 GLAPI void APIENTRY glMatrixMode(GLenum mode) {
+  if (api::compiled(&glMatrixMode, mode)) return;
   Context* ctx = api::contextForSetter();
   if (!ctx) return;
   if (mode != GL_MODELVIEW && mode != GL_PROJECTION) {
@@ -111,47 +113,56 @@ GLAPI void APIENTRY glMatrixMode(GLenum mode) {
 }
 
 GLAPI void APIENTRY glLoadIdentity(void) {
+  if (api::compiled(&glLoadIdentity)) return;
   Context* ctx = api::contextFlushed();
   if (ctx) loadCurrent(*ctx, glm::mat4(1.0f));
 }
 
 GLAPI void APIENTRY glLoadMatrixf(const GLfloat* m) {
+  if (api::compiled(&glLoadMatrixf, api::copied(m, 16))) return;
   Context* ctx = api::contextFlushed();
   if (ctx && m) loadCurrent(*ctx, glm::make_mat4(m));
 }
 
 GLAPI void APIENTRY glLoadMatrixd(const GLdouble* m) {
+  if (api::compiled(&glLoadMatrixd, api::copied(m, 16))) return;
   Context* ctx = api::contextFlushed();
   if (ctx && m) loadCurrent(*ctx, fromDoubles(m));
 }
 
 GLAPI void APIENTRY glMultMatrixf(const GLfloat* m) {
+  if (api::compiled(&glMultMatrixf, api::copied(m, 16))) return;
   Context* ctx = api::contextFlushed();
   if (ctx && m) multiplyCurrent(*ctx, glm::make_mat4(m));
 }
 
 GLAPI void APIENTRY glMultMatrixd(const GLdouble* m) {
+  if (api::compiled(&glMultMatrixd, api::copied(m, 16))) return;
   Context* ctx = api::contextFlushed();
   if (ctx && m) multiplyCurrent(*ctx, fromDoubles(m));
 }
 
 // GL 1.3: the same with row-major input (GL 2.1 §2.11.2).
 GLAPI void APIENTRY glLoadTransposeMatrixf(const GLfloat* m) {
+  if (api::compiled(&glLoadTransposeMatrixf, api::copied(m, 16))) return;
   Context* ctx = api::contextFlushed();
   if (ctx && m) loadCurrent(*ctx, glm::transpose(glm::make_mat4(m)));
 }
 
 GLAPI void APIENTRY glLoadTransposeMatrixd(const GLdouble* m) {
+  if (api::compiled(&glLoadTransposeMatrixd, api::copied(m, 16))) return;
   Context* ctx = api::contextFlushed();
   if (ctx && m) loadCurrent(*ctx, glm::transpose(fromDoubles(m)));
 }
 
 GLAPI void APIENTRY glMultTransposeMatrixf(const GLfloat* m) {
+  if (api::compiled(&glMultTransposeMatrixf, api::copied(m, 16))) return;
   Context* ctx = api::contextFlushed();
   if (ctx && m) multiplyCurrent(*ctx, glm::transpose(glm::make_mat4(m)));
 }
 
 GLAPI void APIENTRY glMultTransposeMatrixd(const GLdouble* m) {
+  if (api::compiled(&glMultTransposeMatrixd, api::copied(m, 16))) return;
   Context* ctx = api::contextFlushed();
   if (ctx && m) multiplyCurrent(*ctx, glm::transpose(fromDoubles(m)));
 }
@@ -159,12 +170,14 @@ GLAPI void APIENTRY glMultTransposeMatrixd(const GLdouble* m) {
 // Mesa flushes neither at glPushMatrix nor at a glPopMatrix whose top was not
 // changed since the push: vertices before and after stay one draw.
 GLAPI void APIENTRY glPushMatrix(void) {
+  if (api::compiled(&glPushMatrix)) return;
   Context* ctx = api::contextForQuery();
   if (!ctx) return;
   if (!ctx->currentMatrixStack().push()) ctx->recordError(GL_STACK_OVERFLOW);
 }
 
 GLAPI void APIENTRY glPopMatrix(void) {
+  if (api::compiled(&glPopMatrix)) return;
   Context* ctx = api::contextForQuery();
   if (!ctx) return;
   MatrixStack& stack = ctx->currentMatrixStack();
@@ -176,16 +189,28 @@ GLAPI void APIENTRY glPopMatrix(void) {
   ctx->markDirty(ctx->transform.matrixMode == GL_PROJECTION ? kDirtyProjection : kDirtyModelview);
 }
 
-GLAPI void APIENTRY glRotatef(GLfloat angle, GLfloat x, GLfloat y, GLfloat z) { rotate(angle, x, y, z); }
+GLAPI void APIENTRY glRotatef(GLfloat angle, GLfloat x, GLfloat y, GLfloat z) {
+  if (api::compiled(&glRotatef, angle, x, y, z)) return;
+  rotate(angle, x, y, z);
+}
 GLAPI void APIENTRY glRotated(GLdouble angle, GLdouble x, GLdouble y, GLdouble z) {
+  if (api::compiled(&glRotated, angle, x, y, z)) return;
   rotate(static_cast<float>(angle), static_cast<float>(x), static_cast<float>(y), static_cast<float>(z));
 }
-GLAPI void APIENTRY glTranslatef(GLfloat x, GLfloat y, GLfloat z) { translate(x, y, z); }
+GLAPI void APIENTRY glTranslatef(GLfloat x, GLfloat y, GLfloat z) {
+  if (api::compiled(&glTranslatef, x, y, z)) return;
+  translate(x, y, z);
+}
 GLAPI void APIENTRY glTranslated(GLdouble x, GLdouble y, GLdouble z) {
+  if (api::compiled(&glTranslated, x, y, z)) return;
   translate(static_cast<float>(x), static_cast<float>(y), static_cast<float>(z));
 }
-GLAPI void APIENTRY glScalef(GLfloat x, GLfloat y, GLfloat z) { scale(x, y, z); }
+GLAPI void APIENTRY glScalef(GLfloat x, GLfloat y, GLfloat z) {
+  if (api::compiled(&glScalef, x, y, z)) return;
+  scale(x, y, z);
+}
 GLAPI void APIENTRY glScaled(GLdouble x, GLdouble y, GLdouble z) {
+  if (api::compiled(&glScaled, x, y, z)) return;
   scale(static_cast<float>(x), static_cast<float>(y), static_cast<float>(z));
 }
 
@@ -193,6 +218,7 @@ GLAPI void APIENTRY glScaled(GLdouble x, GLdouble y, GLdouble z) {
 // arguments to float and builds the matrix in float; so do we.
 GLAPI void APIENTRY glFrustum(GLdouble left, GLdouble right, GLdouble bottom, GLdouble top, GLdouble zNear,
                               GLdouble zFar) {
+  if (api::compiled(&glFrustum, left, right, bottom, top, zNear, zFar)) return;
   Context* ctx = api::contextFlushed();
   if (!ctx) return;
   if (zNear <= 0 || zFar <= 0 || left == right || bottom == top || zNear == zFar) {
@@ -214,6 +240,7 @@ GLAPI void APIENTRY glFrustum(GLdouble left, GLdouble right, GLdouble bottom, GL
 
 GLAPI void APIENTRY glOrtho(GLdouble left, GLdouble right, GLdouble bottom, GLdouble top, GLdouble zNear,
                             GLdouble zFar) {
+  if (api::compiled(&glOrtho, left, right, bottom, top, zNear, zFar)) return;
   Context* ctx = api::contextFlushed();
   if (!ctx) return;
   if (left == right || bottom == top || zNear == zFar) {

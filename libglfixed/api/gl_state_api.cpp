@@ -4,6 +4,7 @@
 
 #include "api/api.h"
 #include "state/vertex_array_queries.h"
+#include "api/list_record.h"
 #include "vertex/color_material.h"
 #include "state/capabilities.h"
 
@@ -50,8 +51,14 @@ void setCapability(GLenum cap, bool enabled) {
 
 extern "C" {
 
-GLAPI void APIENTRY glEnable(GLenum cap) { setCapability(cap, true); }
-GLAPI void APIENTRY glDisable(GLenum cap) { setCapability(cap, false); }
+GLAPI void APIENTRY glEnable(GLenum cap) {
+  if (api::compiled(&glEnable, cap)) return;
+  setCapability(cap, true);
+}
+GLAPI void APIENTRY glDisable(GLenum cap) {
+  if (api::compiled(&glDisable, cap)) return;
+  setCapability(cap, false);
+}
 
 GLAPI GLboolean APIENTRY glIsEnabled(GLenum cap) {
   Context* ctx = api::contextForQuery();
@@ -65,6 +72,7 @@ GLAPI GLboolean APIENTRY glIsEnabled(GLenum cap) {
 }
 
 GLAPI void APIENTRY glViewport(GLint x, GLint y, GLsizei width, GLsizei height) {
+  if (api::compiled(&glViewport, x, y, width, height)) return;
   Context* ctx = api::contextForSetter();
   if (!ctx) return;
   if (width < 0 || height < 0) {
@@ -83,6 +91,7 @@ GLAPI void APIENTRY glViewport(GLint x, GLint y, GLsizei width, GLsizei height) 
 }
 
 GLAPI void APIENTRY glDepthRange(GLclampd zNear, GLclampd zFar) {
+  if (api::compiled(&glDepthRange, zNear, zFar)) return;
   Context* ctx = api::contextForSetter();
   if (!ctx) return;
   ViewportAttrib v = ctx->viewport;
@@ -92,6 +101,7 @@ GLAPI void APIENTRY glDepthRange(GLclampd zNear, GLclampd zFar) {
 }
 
 GLAPI void APIENTRY glDepthFunc(GLenum func) {
+  if (api::compiled(&glDepthFunc, func)) return;
   Context* ctx = api::contextForSetter();
   if (!ctx) return;
   if (!isDepthFunc(func)) {
@@ -102,11 +112,13 @@ GLAPI void APIENTRY glDepthFunc(GLenum func) {
 }
 
 GLAPI void APIENTRY glDepthMask(GLboolean flag) {
+  if (api::compiled(&glDepthMask, flag)) return;
   Context* ctx = api::contextForSetter();
   if (ctx) api::setState(*ctx, ctx->depth.writeMask, flag != GL_FALSE, GL_DEPTH_BUFFER_BIT);
 }
 
 GLAPI void APIENTRY glColorMask(GLboolean r, GLboolean g, GLboolean b, GLboolean a) {
+  if (api::compiled(&glColorMask, r, g, b, a)) return;
   Context* ctx = api::contextForSetter();
   if (!ctx) return;
   const std::array<bool, 4> mask{r != GL_FALSE, g != GL_FALSE, b != GL_FALSE, a != GL_FALSE};
@@ -114,6 +126,7 @@ GLAPI void APIENTRY glColorMask(GLboolean r, GLboolean g, GLboolean b, GLboolean
 }
 
 GLAPI void APIENTRY glClearColor(GLclampf r, GLclampf g, GLclampf b, GLclampf a) {
+  if (api::compiled(&glClearColor, r, g, b, a)) return;
   Context* ctx = api::contextForSetter();
   if (!ctx) return;
   const glm::vec4 c(api::clamp01(r), api::clamp01(g), api::clamp01(b), api::clamp01(a));
@@ -121,11 +134,13 @@ GLAPI void APIENTRY glClearColor(GLclampf r, GLclampf g, GLclampf b, GLclampf a)
 }
 
 GLAPI void APIENTRY glClearDepth(GLclampd depth) {
+  if (api::compiled(&glClearDepth, depth)) return;
   Context* ctx = api::contextForSetter();
   if (ctx) api::setStateWithoutFlush(*ctx, ctx->depth.clearDepth, api::clamp01(depth), GL_DEPTH_BUFFER_BIT);
 }
 
 GLAPI void APIENTRY glCullFace(GLenum mode) {
+  if (api::compiled(&glCullFace, mode)) return;
   Context* ctx = api::contextForSetter();
   if (!ctx) return;
   if (mode != GL_FRONT && mode != GL_BACK && mode != GL_FRONT_AND_BACK) {
@@ -136,6 +151,7 @@ GLAPI void APIENTRY glCullFace(GLenum mode) {
 }
 
 GLAPI void APIENTRY glFrontFace(GLenum mode) {
+  if (api::compiled(&glFrontFace, mode)) return;
   Context* ctx = api::contextForSetter();
   if (!ctx) return;
   if (mode != GL_CW && mode != GL_CCW) {
@@ -148,6 +164,7 @@ GLAPI void APIENTRY glFrontFace(GLenum mode) {
 
 // GL 3.2 / ARB_provoking_vertex: which vertex gives a flat-shaded primitive its colour.
 GLAPI void APIENTRY glProvokingVertex(GLenum mode) {
+  if (api::compiled(&glProvokingVertex, mode)) return;
   Context* ctx = api::contextForSetter();
   if (!ctx) return;
   if (mode != GL_FIRST_VERTEX_CONVENTION && mode != GL_LAST_VERTEX_CONVENTION) {
@@ -159,6 +176,7 @@ GLAPI void APIENTRY glProvokingVertex(GLenum mode) {
 GLAPI void APIENTRY glProvokingVertexEXT(GLenum mode) { glProvokingVertex(mode); }
 
 GLAPI void APIENTRY glHint(GLenum target, GLenum mode) {
+  if (api::compiled(&glHint, target, mode)) return;
   Context* ctx = api::contextForSetter();
   if (!ctx) return;
   if (mode != GL_FASTEST && mode != GL_NICEST && mode != GL_DONT_CARE) {

@@ -1,6 +1,7 @@
 // glBegin/glEnd and the current vertex attributes: glVertex, glColor, glNormal
 // (GL 2.1 §2.6-§2.7), every variant.
 #include "api/api.h"
+#include "api/list_record.h"
 #include "api/normalized.h"
 #include "pipeline/immediate_mode.h"
 #include "vertex/color_material.h"
@@ -16,6 +17,10 @@ using api::normalized;
 void addVertex(int size, float x, float y, float z, float w) {
   Context* ctx = currentContext();
   if (!ctx) return;
+  if (ctx->displayLists.compiler &&
+      api::compiledVertexData([&](pipeline::ListCompiler& l) { l.vertex(glm::vec4(x, y, z, w)); },
+                              &glVertex4f, x, y, z, w))
+    return;
   if (!ctx->insideBeginEnd) return;  // GL 2.1 §2.6.3: undefined outside Begin/End; ignored
   pipeline::positionGrows(*ctx, size);
   VertexBatch& b = ctx->batch;
@@ -29,6 +34,10 @@ void addVertex(int size, float x, float y, float z, float w) {
 void color(int size, float r, float g, float b, float a) {
   Context* ctx = currentContext();
   if (!ctx) return;
+  if (ctx->displayLists.compiler &&
+      api::compiledVertexData([&](pipeline::ListCompiler& l) { l.color(glm::vec4(r, g, b, a)); },
+                              &glColor4f, r, g, b, a))
+    return;
   if (ctx->insideBeginEnd || ctx->vbo.verticesBuffered) pipeline::colorBecomesVertexData(*ctx, size);
   ctx->current.color = glm::vec4(r, g, b, a);
   if (!ctx->insideBeginEnd && ctx->lighting.colorMaterial) {
@@ -49,6 +58,10 @@ void color4(T r, T g, T b, T a) {
 void normal(float x, float y, float z) {
   Context* ctx = currentContext();
   if (!ctx) return;
+  if (ctx->displayLists.compiler &&
+      api::compiledVertexData([&](pipeline::ListCompiler& l) { l.normal(glm::vec3(x, y, z)); },
+                              &glNormal3f, x, y, z))
+    return;
   if (ctx->insideBeginEnd || ctx->vbo.verticesBuffered) pipeline::normalBecomesVertexData(*ctx);
   ctx->current.normal = glm::vec3(x, y, z);
 }
@@ -62,6 +75,17 @@ void normal3(T x, T y, T z) {
 extern "C" {
 
 GLAPI void APIENTRY glBegin(GLenum mode) {
+  // In a list: the glBegin/glEnd pairs become a vertex node; the errors are
+  // compiled (§5.4), as Mesa's save_Begin compiles them.
+  if (pipeline::ListCompiler* list = api::listCompiler(currentContext())) {
+    if (mode > GL_POLYGON)
+      list->recordError(*currentContext(), GL_INVALID_ENUM);
+    else if (list->insideBeginEnd())
+      list->recordError(*currentContext(), GL_INVALID_OPERATION);
+    else
+      list->begin(mode);
+    return;
+  }
   // Not a state change: Mesa keeps buffering vertices across glBegin.
   Context* ctx = api::contextForQuery();
   if (!ctx) return;
@@ -74,6 +98,7 @@ GLAPI void APIENTRY glBegin(GLenum mode) {
 }
 
 GLAPI void APIENTRY glEnd(void) {
+  if (api::compiledVertexData([](pipeline::ListCompiler& l) { l.end(); }, &glEnd)) return;
   Context* ctx = currentContext();
   if (!ctx) return;
   if (!ctx->insideBeginEnd) {

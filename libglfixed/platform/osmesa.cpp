@@ -83,7 +83,9 @@ GLAPI OSMesaContext APIENTRY OSMesaCreateContextExt(GLenum format, GLint depthBi
     std::fprintf(stderr, "libglfixed: OSMesaCreateContext: unsupported format 0x%x\n", format);
     return nullptr;
   }
-  return new (std::nothrow) osmesa_context(f, depthBitsFor(depthBits, stencilBits));
+  osmesa_context* c = new (std::nothrow) osmesa_context(f, depthBitsFor(depthBits, stencilBits));
+  if (c && sharelist) c->context.displayLists.shareWith(sharelist->context.displayLists);
+  return c;
 }
 
 GLAPI OSMesaContext APIENTRY OSMesaCreateContext(GLenum format, OSMesaContext sharelist) {

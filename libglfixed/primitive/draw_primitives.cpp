@@ -232,7 +232,9 @@ void drawPrimitives(const PrimitiveState& state, const ShadedVertices& vertices,
   const bool indexed =
       state.submission == Submission::kDrawElements || state.submission == Submission::kDisplayList;
   GLenum mode = state.mode;
-  if ((state.submission == Submission::kBeginEnd || state.submission == Submission::kDisplayList) && n == 3 &&
+  // (A display list converts in its vertex node, display_list.cpp: Mesa's
+  // save module leaves the first primitive of a node unconverted.)
+  if (state.submission == Submission::kBeginEnd && n == 3 &&
       (mode == GL_TRIANGLE_STRIP || mode == GL_TRIANGLE_FAN))
     mode = GL_TRIANGLES;
   // Indexed draws are segmented otherwise (not modelled yet): one segment.

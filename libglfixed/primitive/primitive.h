@@ -21,10 +21,11 @@ struct PrimitiveState {
   int viewportX = 0, viewportY = 0, viewportWidth = 0, viewportHeight = 0;
   double depthNear = 0, depthFar = 1;
   // How the batch was submitted. Mesa treats the ways differently: an indexed
-  // draw splits quads otherwise (assemble.h), and glBegin/glEnd and display
-  // lists turn a 3-vertex strip or fan into GL_TRIANGLES (vbo_exec.c,
+  // draw splits quads otherwise (assemble.h), and glBegin/glEnd turns a
+  // 3-vertex strip or fan into GL_TRIANGLES (vbo_exec.c,
   // vbo_try_prim_conversion), which moves a fan's first-vertex provoking
-  // vertex.
+  // vertex. Display lists convert every primitive of a vertex node but its
+  // first (pipeline/display_list.cpp, scene list_provoking_first).
   enum class Submission { kBeginEnd, kDrawArrays, kDrawElements, kDisplayList };
   Submission submission = Submission::kBeginEnd;
   // A colour that is not a per-vertex attribute of the draw in Mesa's terms

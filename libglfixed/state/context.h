@@ -9,6 +9,7 @@
 
 #include "framebuffer/framebuffer.h"
 #include "pipeline/vbo_store.h"
+#include "pipeline/display_list.h"
 #include "pipeline/vertex_batch.h"
 #include "state/attrib_groups.h"
 #include "state/attrib_stack.h"
@@ -17,6 +18,7 @@
 #include "state/dirty.h"
 #include "state/eval_attrib.h"
 #include "state/lighting_attrib.h"
+#include "state/list_attrib.h"
 #include "state/matrix_stack.h"
 #include "state/vertex_array_attrib.h"
 #include "state/raster_pos.h"
@@ -72,6 +74,7 @@ class Context {
   AttribStack attribStack;  // glPushAttrib/glPopAttrib
   EvalAttrib eval;
   EvalMaps evalMaps;  // in no attribute group (table 6.39)
+  ListAttrib list;
   MatrixStack modelview{kMaxModelviewStackDepth};
   MatrixStack projection{kMaxProjectionStackDepth};
   RasterPosState rasterPos;    // glRasterPos (§2.13); belongs to GL_CURRENT_BIT
@@ -107,6 +110,9 @@ class Context {
   // The primitives of consecutive glBegin/glEnd pairs Mesa would draw as one
   // (pipeline/immediate_mode.h); drawn when a state change flushes them.
   VertexBatch pending;
+
+  // Display lists (GL 2.1 §5.4): per context for now.
+  pipeline::DisplayLists displayLists;
 
   // Errors (GL 2.1 §2.5): the first error is kept until glGetError reads it.
   void recordError(GLenum error) {

@@ -1,9 +1,12 @@
 /* Benchmark: a legacy program drawing lit smooth spheres in immediate mode
  * (about 20k triangles a frame, 512x512, depth tested, 2 lights), the same
- * spheres compiled once into a display list and replayed ("list"), and
+ * spheres compiled once into a display list and replayed ("list"), the same
+ * vertices in one buffer object drawn with glMultiDrawArrays ("vbo"), and
  * full-screen lit quads for fill. Built against Mesa's headers; run on Mesa
  * and on the drop-in by bench/run_bench.sh. Prints ms per frame. */
+#define GL_GLEXT_PROTOTYPES 1
 #include <GL/gl.h>
+#include <GL/glext.h>
 #include <GL/osmesa.h>
 #include <math.h>
 #include <stdio.h>
@@ -30,6 +33,28 @@ static void sphere(float cx, float cy, float cz, float r, int slices, int stacks
         }
         glEnd();
     }
+}
+
+/* The spheres' quad strips as interleaved normal + position floats (GL_N3F_V3F
+ * order), the same values sphere() passes to glNormal3f/glVertex3f. */
+static int sphere_vertices(float *out, GLint *first, GLsizei *count, int strip0, float cx, float cy, float cz,
+                           float r, int slices, int stacks) {
+    int n = 0;
+    for (int i = 0; i < stacks; i++) {
+        float a0 = (float)M_PI * i / stacks - (float)M_PI / 2, a1 = (float)M_PI * (i + 1) / stacks - (float)M_PI / 2;
+        first[strip0 + i] = n;
+        for (int j = 0; j <= slices; j++) {
+            float b = 2 * (float)M_PI * j / slices;
+            float x0 = cosf(a0) * cosf(b), y0 = sinf(a0), z0 = cosf(a0) * sinf(b);
+            float x1 = cosf(a1) * cosf(b), y1 = sinf(a1), z1 = cosf(a1) * sinf(b);
+            float v[12] = {x1, y1, z1, cx + r * x1, cy + r * y1, cz + r * z1,
+                           x0, y0, z0, cx + r * x0, cy + r * y0, cz + r * z0};
+            memcpy(out + n * 6, v, sizeof v);
+            n += 2;
+        }
+        count[strip0 + i] = n - first[strip0 + i];
+    }
+    return n;
 }
 
 int main(int argc, char **argv) {
@@ -61,6 +86,25 @@ int main(int argc, char **argv) {
         for (int s = 0; s < 4; s++) sphere(-1.5f + s, (s % 2) - 0.5f, 0, 0.9f, 64, 40);
         glEndList();
     }
+    const int vbo = strcmp(what, "vbo") == 0;
+    enum { kSlices = 64, kStacks = 40, kStrips = 4 * kStacks };
+    static GLint first[kStrips];
+    static GLsizei count[kStrips];
+    if (vbo) {  /* uploaded before the timing: only the draws are timed */
+        static float data[4 * kStacks * (kSlices + 1) * 2 * 6];
+        int n = 0;
+        for (int s = 0; s < 4; s++) {
+            int base = n;
+            n += sphere_vertices(data + n * 6, first, count, s * kStacks, -1.5f + s, (s % 2) - 0.5f, 0, 0.9f,
+                                 kSlices, kStacks);
+            for (int i = 0; i < kStacks; i++) first[s * kStacks + i] += base;
+        }
+        GLuint buffer;
+        glGenBuffers(1, &buffer);
+        glBindBuffer(GL_ARRAY_BUFFER, buffer);
+        glBufferData(GL_ARRAY_BUFFER, (GLsizeiptr)(n * 6 * sizeof(float)), data, GL_STATIC_DRAW);
+        glInterleavedArrays(GL_N3F_V3F, 0, (const void *)0);
+    }
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     glFinish();
     double t1 = now();
@@ -76,6 +120,8 @@ int main(int argc, char **argv) {
             }
         } else if (list) {
             glCallList(1);
+        } else if (vbo) {
+            glMultiDrawArrays(GL_QUAD_STRIP, first, count, kStrips);
         } else {
             for (int s = 0; s < 4; s++) sphere(-1.5f + s, (s % 2) - 0.5f, 0, 0.9f, 64, 40);
         }

@@ -8,7 +8,7 @@ build="${1:-build}"
 frames="${2:-20}"
 exe="$build/bench/bench_lit_spheres"
 declare -A ms
-for what in geometry list fill; do
+for what in geometry list vbo fill; do
   mesa=$(env -u LD_LIBRARY_PATH "$exe" "$frames" "$what")
   ours=$(LD_LIBRARY_PATH="$build/dropin" "$exe" "$frames" "$what")
   echo "Mesa       $mesa"
@@ -21,7 +21,10 @@ for what in geometry list fill; do
 done
 # The display list replay of the geometry against the same immediate-mode calls.
 awk -v i="${ms[ours_geometry]}" -v l="${ms[ours_list]}" -v mi="${ms[mesa_geometry]}" -v ml="${ms[mesa_list]}" \
-  'BEGIN { printf "list replay vs immediate mode: libglfixed %.2fx, Mesa %.2fx (speed)\n\n", i / l, mi / ml }'
+  'BEGIN { printf "list replay vs immediate mode: libglfixed %.2fx, Mesa %.2fx (speed)\n", i / l, mi / ml }'
+# The buffer-object draws of the same vertices against immediate mode.
+awk -v i="${ms[ours_geometry]}" -v b="${ms[ours_vbo]}" -v mi="${ms[mesa_geometry]}" -v mb="${ms[mesa_vbo]}" \
+  'BEGIN { printf "buffer-object draws vs immediate mode: libglfixed %.2fx, Mesa %.2fx (speed)\n\n", i / b, mi / mb }'
 # Whole-process start-up: load, context, one frame, exit.
 start() { local t0 t1; t0=$(date +%s%N); "$@" >/dev/null; t1=$(date +%s%N); echo $(( (t1 - t0) / 1000000 )); }
 m=$(start env -u LD_LIBRARY_PATH "$exe" 1 geometry)

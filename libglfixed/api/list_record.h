@@ -22,9 +22,18 @@
 // (pipeline/display_list.h) instead of being stored as calls.
 //
 // glDrawArrays/glDrawElements must capture the array contents at compile
-// time: their hook is compiledVertexData with a node filler that fetches the
-// arrays' elements into the node (ListCompiler::begin/vertex/.../end), the
-// way Mesa's save_DrawArrays loops over _mesa_array_element.
+// time (§5.4): while a list compiles (api::listCompiler(ctx) non-null, not
+// inside the list's glBegin/glEnd) they validate mode and count as a compiled
+// error would (ListCompiler::recordError), then fetch each element into the
+// node, ListCompiler::begin(mode), color()/normal() for the enabled arrays,
+// vertex(), end(), the way Mesa's save_DrawArrays loops over
+// _mesa_array_element; in GL_COMPILE_AND_EXECUTE the node is fed back at its
+// end like any other.
+//
+// A few commands Mesa runs before it compiles them, or does not compile when
+// they repeat the list's last value (glShadeModel, glMaterial outside
+// glBegin/glEnd): they use runUnrecorded() and ListCompiler's known state
+// instead of the one line (api/gl_light_api.cpp).
 #pragma once
 
 #include <GL/gl.h>

@@ -47,6 +47,12 @@ uint32_t verticesToCarry(GLenum mode, uint32_t n, bool* keepFirst) {
   }
 }
 
+bool joinsRuns(GLenum mode) {
+  return mode != GL_LINE_LOOP && mode != GL_TRIANGLE_FAN && mode != GL_QUAD_STRIP && mode != GL_POLYGON;
+}
+
+}  // namespace
+
 // Mesa's merge_prims: the immediate mode's merge, within one node. The first
 // primitive is not converted (Mesa's loop starts at the second).
 std::vector<ListPrimitive> mergeLikeImmediateMode(const std::vector<ListPrimitive>& in) {
@@ -68,15 +74,6 @@ std::vector<ListPrimitive> mergeLikeImmediateMode(const std::vector<ListPrimitiv
     out.push_back(p);
   }
   return out;
-}
-
-struct IndexedDraw {
-  GLenum mode;
-  std::vector<uint32_t> indices;
-};
-
-bool joinsRuns(GLenum mode) {
-  return mode != GL_LINE_LOOP && mode != GL_TRIANGLE_FAN && mode != GL_QUAD_STRIP && mode != GL_POLYGON;
 }
 
 // Mesa's compile_vertex_list index building: runs of one mode become one draw.
@@ -113,8 +110,6 @@ std::vector<IndexedDraw> mergeIntoDraws(const std::vector<ListPrimitive>& prims)
   }
   return draws;
 }
-
-}  // namespace
 
 // ---- ListCompiler -----------------------------------------------------------
 

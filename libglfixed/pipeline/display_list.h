@@ -175,6 +175,16 @@ class DisplayLists {
   int callDepth_ = 0;
 };
 
+// Mesa's two merges of a node's primitives (vbo_save_api.c): merge_prims,
+// the immediate mode's merge from the second primitive on; then the index
+// buffer's runs of one mode.
+std::vector<ListPrimitive> mergeLikeImmediateMode(const std::vector<ListPrimitive>& primitives);
+struct IndexedDraw {
+  GLenum mode;
+  std::vector<uint32_t> indices;  // into the node's vertices
+};
+std::vector<IndexedDraw> mergeIntoDraws(const std::vector<ListPrimitive>& primitives);
+
 // Draws a node of a list being executed (or feeds it back, see above).
 void replayVertexNode(Context& ctx, VertexNode& node);
 // Feeds a node's vertices through the immediate-mode entry points.

@@ -157,4 +157,19 @@ void positionGrows(Context& ctx, int size) {
   growVertexFormat(ctx, ctx.vbo.positionSize == 0, [size](Context::VboFormat& f) { f.positionSize = size; });
 }
 
+void materialBecomesVertexData(Context& ctx, uint32_t attributes) {
+  const uint32_t added = attributes & ~ctx.vbo.materialAttributes;
+  if (added == 0) return;
+  // Colours 4 floats, shininess 1 (bits 4 and 9), colour indexes 3 (bits 10, 11).
+  int floats = 0;
+  for (uint32_t bit = 0; bit < 12; ++bit) {
+    if (!(added & (1u << bit))) continue;
+    floats += (bit == 4 || bit == 9) ? 1 : (bit >= 10 ? 3 : 4);
+  }
+  growVertexFormat(ctx, true, [added, floats](Context::VboFormat& f) {
+    f.materialAttributes |= added;
+    f.materialFloats += floats;
+  });
+}
+
 }  // namespace glfixed::pipeline

@@ -462,14 +462,15 @@ GLAPI void APIENTRY glGetMaterialiv(GLenum face, GLenum pname, GLint* params) {
 }
 
 GLAPI void APIENTRY glColorMaterial(GLenum face, GLenum mode) {
-  Context* ctx = api::contextOutsideBeginEnd();
+  Context* ctx = api::contextForQuery();
   if (!ctx) return;
   if (vertex::colorMaterialBits(face, mode) == 0) {
     ctx->recordError(GL_INVALID_ENUM);
     return;
   }
   LightingAttrib& l = ctx->lighting;
-  if (l.colorMaterialFace == face && l.colorMaterialParameter == mode) return;
+  if (l.colorMaterialFace == face && l.colorMaterialParameter == mode) return;  // Mesa: no flush
+  pipeline::flushVertices(*ctx);
   l.colorMaterialFace = face;
   l.colorMaterialParameter = mode;
   ctx->markDirty(kDirtyLighting);
@@ -477,13 +478,14 @@ GLAPI void APIENTRY glColorMaterial(GLenum face, GLenum mode) {
 }
 
 GLAPI void APIENTRY glShadeModel(GLenum mode) {
-  Context* ctx = api::contextOutsideBeginEnd();
+  Context* ctx = api::contextForQuery();
   if (!ctx) return;
   if (mode != GL_FLAT && mode != GL_SMOOTH) {
     ctx->recordError(GL_INVALID_ENUM);
     return;
   }
-  if (ctx->lighting.shadeModel == mode) return;
+  if (ctx->lighting.shadeModel == mode) return;  // Mesa: no flush
+  pipeline::flushVertices(*ctx);
   ctx->lighting.shadeModel = mode;
   ctx->markDirty(kDirtyLighting);
 }

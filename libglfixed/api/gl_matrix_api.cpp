@@ -99,8 +99,9 @@ void scale(float x, float y, float z) {
 
 extern "C" {
 
+// Mesa does not draw the buffered vertices at glMatrixMode.
 GLAPI void APIENTRY glMatrixMode(GLenum mode) {
-  Context* ctx = api::contextOutsideBeginEnd();
+  Context* ctx = api::contextForQuery();
   if (!ctx) return;
   if (mode != GL_MODELVIEW && mode != GL_PROJECTION) {
     // GL_TEXTURE and GL_COLOR need texturing and imaging, not implemented yet.

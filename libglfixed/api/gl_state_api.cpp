@@ -65,8 +65,11 @@ GLAPI GLboolean APIENTRY glIsEnabled(GLenum cap) {
   return GL_FALSE;
 }
 
+// Like Mesa, the setters below return before flushing the buffered vertices
+// when the value does not change (a redundant call does not cut a merged
+// draw); glClearColor and glClearDepth never draw them (probed on Mesa 22.3).
 GLAPI void APIENTRY glViewport(GLint x, GLint y, GLsizei width, GLsizei height) {
-  Context* ctx = api::contextOutsideBeginEnd();
+  Context* ctx = api::contextForQuery();
   if (!ctx) return;
   if (width < 0 || height < 0) {
     ctx->recordError(GL_INVALID_VALUE);
@@ -74,85 +77,105 @@ GLAPI void APIENTRY glViewport(GLint x, GLint y, GLsizei width, GLsizei height) 
   }
   // Sizes are clamped to GL_MAX_VIEWPORT_DIMS (GL 2.1 §2.11.1); the origin to
   // Mesa's GL_VIEWPORT_BOUNDS_RANGE, [-32768, 32767] (so x + width cannot overflow).
-  ctx->viewport.x = std::clamp(x, kViewportBoundsMin, kViewportBoundsMax);
-  ctx->viewport.y = std::clamp(y, kViewportBoundsMin, kViewportBoundsMax);
-  ctx->viewport.width = std::min(width, kMaxViewportSize);
-  ctx->viewport.height = std::min(height, kMaxViewportSize);
+  ViewportAttrib& v = ctx->viewport;
+  x = std::clamp(x, kViewportBoundsMin, kViewportBoundsMax);
+  y = std::clamp(y, kViewportBoundsMin, kViewportBoundsMax);
+  width = std::min(width, kMaxViewportSize);
+  height = std::min(height, kMaxViewportSize);
   ctx->viewportInitialized = true;
+  if (v.x == x && v.y == y && v.width == width && v.height == height) return;
+  pipeline::flushVertices(*ctx);
+  v.x = x;
+  v.y = y;
+  v.width = width;
+  v.height = height;
 }
 
 GLAPI void APIENTRY glDepthRange(GLclampd zNear, GLclampd zFar) {
-  Context* ctx = api::contextOutsideBeginEnd();
+  Context* ctx = api::contextForQuery();
   if (!ctx) return;
-  ctx->viewport.depthNear = api::clamp01(zNear);
-  ctx->viewport.depthFar = api::clamp01(zFar);
+  const auto n = api::clamp01(zNear), f = api::clamp01(zFar);
+  if (ctx->viewport.depthNear == n && ctx->viewport.depthFar == f) return;
+  pipeline::flushVertices(*ctx);
+  ctx->viewport.depthNear = n;
+  ctx->viewport.depthFar = f;
 }
 
 GLAPI void APIENTRY glDepthFunc(GLenum func) {
-  Context* ctx = api::contextOutsideBeginEnd();
+  Context* ctx = api::contextForQuery();
   if (!ctx) return;
   if (!isDepthFunc(func)) {
     ctx->recordError(GL_INVALID_ENUM);
     return;
   }
+  if (ctx->depth.func == func) return;
+  pipeline::flushVertices(*ctx);
   ctx->depth.func = func;
 }
 
 GLAPI void APIENTRY glDepthMask(GLboolean flag) {
-  Context* ctx = api::contextOutsideBeginEnd();
-  if (ctx) ctx->depth.writeMask = flag != GL_FALSE;
+  Context* ctx = api::contextForQuery();
+  if (!ctx || ctx->depth.writeMask == (flag != GL_FALSE)) return;
+  pipeline::flushVertices(*ctx);
+  ctx->depth.writeMask = flag != GL_FALSE;
 }
 
 GLAPI void APIENTRY glColorMask(GLboolean r, GLboolean g, GLboolean b, GLboolean a) {
-  Context* ctx = api::contextOutsideBeginEnd();
+  Context* ctx = api::contextForQuery();
   if (!ctx) return;
   bool* m = ctx->colorBuffer.writeMask;
-  m[0] = r != GL_FALSE;
-  m[1] = g != GL_FALSE;
-  m[2] = b != GL_FALSE;
-  m[3] = a != GL_FALSE;
+  const bool want[4] = {r != GL_FALSE, g != GL_FALSE, b != GL_FALSE, a != GL_FALSE};
+  if (std::equal(want, want + 4, m)) return;
+  pipeline::flushVertices(*ctx);
+  std::copy(want, want + 4, m);
 }
 
 GLAPI void APIENTRY glClearColor(GLclampf r, GLclampf g, GLclampf b, GLclampf a) {
-  Context* ctx = api::contextOutsideBeginEnd();
+  Context* ctx = api::contextForQuery();
   if (!ctx) return;
   ctx->colorBuffer.clearColor = glm::vec4(api::clamp01(r), api::clamp01(g), api::clamp01(b), api::clamp01(a));
 }
 
 GLAPI void APIENTRY glClearDepth(GLclampd depth) {
-  Context* ctx = api::contextOutsideBeginEnd();
+  Context* ctx = api::contextForQuery();
   if (ctx) ctx->depth.clearDepth = api::clamp01(depth);
 }
 
 GLAPI void APIENTRY glCullFace(GLenum mode) {
-  Context* ctx = api::contextOutsideBeginEnd();
+  Context* ctx = api::contextForQuery();
   if (!ctx) return;
   if (mode != GL_FRONT && mode != GL_BACK && mode != GL_FRONT_AND_BACK) {
     ctx->recordError(GL_INVALID_ENUM);
     return;
   }
+  if (ctx->polygon.cullFaceMode == mode) return;
+  pipeline::flushVertices(*ctx);
   ctx->polygon.cullFaceMode = mode;
 }
 
 GLAPI void APIENTRY glFrontFace(GLenum mode) {
-  Context* ctx = api::contextOutsideBeginEnd();
+  Context* ctx = api::contextForQuery();
   if (!ctx) return;
   if (mode != GL_CW && mode != GL_CCW) {
     ctx->recordError(GL_INVALID_ENUM);
     return;
   }
+  if (ctx->polygon.frontFace == mode) return;
+  pipeline::flushVertices(*ctx);
   ctx->polygon.frontFace = mode;
   ctx->markDirty(kDirtyLighting);  // two-sided lighting picks faces by it
 }
 
 // GL 3.2 / ARB_provoking_vertex: which vertex gives a flat-shaded primitive its colour.
 GLAPI void APIENTRY glProvokingVertex(GLenum mode) {
-  Context* ctx = api::contextOutsideBeginEnd();
+  Context* ctx = api::contextForQuery();
   if (!ctx) return;
   if (mode != GL_FIRST_VERTEX_CONVENTION && mode != GL_LAST_VERTEX_CONVENTION) {
     ctx->recordError(GL_INVALID_ENUM);
     return;
   }
+  if (ctx->lighting.provokingVertex == mode) return;
+  pipeline::flushVertices(*ctx);
   ctx->lighting.provokingVertex = mode;
 }
 GLAPI void APIENTRY glProvokingVertexEXT(GLenum mode) { glProvokingVertex(mode); }

@@ -47,7 +47,7 @@ bool isColorPname(GLenum pname) { return pname == GL_AMBIENT || pname == GL_DIFF
 // ---- glLight ---------------------------------------------------------------
 
 void lightfv(GLenum light, GLenum pname, const GLfloat* params) {
-  Context* ctx = api::contextOutsideBeginEnd();
+  Context* ctx = api::contextForQuery();  // a flush only when the value changes, as in Mesa
   if (!ctx) return;
   const int i = lightIndex(light);
   if (i < 0) {
@@ -62,6 +62,7 @@ void lightfv(GLenum light, GLenum pname, const GLfloat* params) {
       const glm::vec4 v4(params[0], params[1], params[2], params[3]);
       glm::vec4& c = pname == GL_AMBIENT ? l.ambient : pname == GL_DIFFUSE ? l.diffuse : l.specular;
       if (c == v4) return;
+      pipeline::flushVertices(*ctx);
       c = v4;
       break;
     }
@@ -69,6 +70,7 @@ void lightfv(GLenum light, GLenum pname, const GLfloat* params) {
       const glm::vec4 v4(params[0], params[1], params[2], params[3]);
       const glm::vec4 p = vertex::transformPointLikeMesa(ctx->modelview.top(), v4);
       if (l.eyePosition == p) return;
+      pipeline::flushVertices(*ctx);
       l.eyePosition = p;
       break;
     }
@@ -76,6 +78,7 @@ void lightfv(GLenum light, GLenum pname, const GLfloat* params) {
       const glm::vec3 d = vertex::transformDirectionLikeMesa(ctx->modelview.top(),
                                                              glm::vec3(params[0], params[1], params[2]));
       if (l.eyeSpotDirection == d) return;
+      pipeline::flushVertices(*ctx);
       l.eyeSpotDirection = d;
       break;
     }
@@ -85,6 +88,7 @@ void lightfv(GLenum light, GLenum pname, const GLfloat* params) {
         return;
       }
       if (l.spotExponent == params[0]) return;
+      pipeline::flushVertices(*ctx);
       l.spotExponent = params[0];
       break;
     case GL_SPOT_CUTOFF:
@@ -93,6 +97,7 @@ void lightfv(GLenum light, GLenum pname, const GLfloat* params) {
         return;
       }
       if (l.spotCutoff == params[0]) return;
+      pipeline::flushVertices(*ctx);
       l.spotCutoff = params[0];
       break;
     case GL_CONSTANT_ATTENUATION:
@@ -106,6 +111,7 @@ void lightfv(GLenum light, GLenum pname, const GLfloat* params) {
                  : pname == GL_LINEAR_ATTENUATION ? l.linearAttenuation
                                                   : l.quadraticAttenuation;
       if (k == params[0]) return;
+      pipeline::flushVertices(*ctx);
       k = params[0];
       break;
     }
@@ -167,13 +173,14 @@ const Light* lightForQuery(Context* ctx, GLenum light, GLenum pname, GLfloat* va
 // ---- glLightModel ----------------------------------------------------------
 
 void lightModelfv(GLenum pname, const GLfloat* params) {
-  Context* ctx = api::contextOutsideBeginEnd();
+  Context* ctx = api::contextForQuery();  // a flush only when the value changes, as in Mesa
   if (!ctx) return;
   LightModel& m = ctx->lighting.model;
   switch (pname) {
     case GL_LIGHT_MODEL_AMBIENT: {
       const glm::vec4 a(params[0], params[1], params[2], params[3]);
       if (m.ambient == a) return;
+      pipeline::flushVertices(*ctx);
       m.ambient = a;
       break;
     }
@@ -182,6 +189,7 @@ void lightModelfv(GLenum pname, const GLfloat* params) {
       bool& flag = pname == GL_LIGHT_MODEL_LOCAL_VIEWER ? m.localViewer : m.twoSide;
       const bool value = params[0] != 0.0f;
       if (flag == value) return;
+      pipeline::flushVertices(*ctx);
       flag = value;
       break;
     }
@@ -196,6 +204,7 @@ void lightModelfv(GLenum pname, const GLfloat* params) {
         return;
       }
       if (m.colorControl == value) return;
+      pipeline::flushVertices(*ctx);
       m.colorControl = value;
       break;
     }

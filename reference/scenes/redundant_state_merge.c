@@ -35,9 +35,10 @@ static void inside_quad(int cell)
 int main(int argc, char **argv)
 {
     float pos[4] = {0, 1, 1, 0}; /* not the default: a change */
+    float ambient[4] = {0.2f, 0.2f, 0.2f, 1}; /* the default */
     scene_begin(argc, argv, 128, 128);
     scene_ortho_pixels();
-    for (int k = 0; k < 24; k++) {
+    for (int k = 0; k < 27; k++) {
         glTranslatef(0, 0, 0); /* a flush: each cell starts alone */
         clipped_quad();
         switch (k) {
@@ -66,6 +67,10 @@ int main(int argc, char **argv)
         case 21: glViewport(0, 0, 128, 127); break;
         case 22: glColorMaterial(GL_FRONT, GL_DIFFUSE); break;
         case 23: glLightfv(GL_LIGHT0, GL_POSITION, pos); break; /* a new light position */
+        /* lighting state set to what it is: no flush */
+        case 24: glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, 0); break;
+        case 25: glLightModelfv(GL_LIGHT_MODEL_AMBIENT, ambient); break;
+        case 26: glLightfv(GL_LIGHT0, GL_POSITION, pos); break; /* the position case 23 set */
         }
         inside_quad(k);
         glDepthFunc(GL_LESS);

@@ -44,7 +44,9 @@ void wrapBuffers(Context& ctx) {
   if (ctx.insideBeginEnd && b.size() > 0) {
     const size_t count = b.size();
     const WrapSplit split = wrapSplit(b.mode, static_cast<uint32_t>(count));
-    if (split.drawn > split.copied) {
+    // The open primitive joins the last run when it has the same mode.
+    const bool suppressed = store.primCount >= 2 && b.mode == store.runMode && store.runSuppressed();
+    if (split.drawn > split.copied && !suppressed) {
       VertexBatch part;
       part.mode = b.mode;
       part.materials = b.materials;
@@ -105,12 +107,23 @@ void endPrimitive(Context& ctx) {
   if (merged) {
     --store.primCount;
     store.lastCount += count;
+    if (store.runDraws == 1) store.runFirstCount += count;  // merged into the run's first primitive
   } else {
     store.lastMode = mode;
     store.lastCount = count;
+    if (store.primCount >= 2 && mode == store.runMode) {
+      ++store.runDraws;
+    } else {  // a new run
+      store.runIndex = store.primCount >= 2 ? store.runIndex + 1 : 0;
+      store.runMode = mode;
+      store.runFirstCount = count;
+      store.runDraws = 1;
+    }
   }
-  if (count > 0) {
-    ctx.vbo.verticesBuffered = true;
+  if (count > 0) ctx.vbo.verticesBuffered = true;
+  if (count > 0 && store.runSuppressed()) {
+    b.clearVertices();  // Mesa draws nothing of it (VboStore::runSuppressed)
+  } else if (count > 0) {
     b.mode = mode;
     b.resizeVertices(wholePrimitives(mode, count));
     // A batch with glMaterial inside is drawn at once: its per-vertex material

@@ -315,7 +315,8 @@ void materialfv(GLenum face, GLenum pname, const GLfloat* params) {
   // with glMaterial calls is one with more than one snapshot.
   VertexBatch& b = ctx->batch;
   if (b.materials.size() <= 1) {
-    lighting.beginEndMaterialMask = 0;
+    // (the pending draw may still be lit per vertex with the old mask)
+    if (ctx->pending.size() == 0 || ctx->pending.materials.size() <= 1) lighting.beginEndMaterialMask = 0;
     b.materials.push_back(lighting.material);
   } else if (changed) {
     const bool lastReferenced = !b.materialIndex.empty() && b.materialIndex.back() == b.materials.size() - 1;

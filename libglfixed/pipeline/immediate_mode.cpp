@@ -32,6 +32,21 @@ void dropUnusedMaterials(VertexBatch& b) {
   for (uint32_t& i : b.materialIndex) i -= first;
 }
 
+// A primitive merged into the pending draw. With glMaterial inside either
+// of them the material snapshots are concatenated, so that each vertex keeps
+// its own (a batch with several snapshots is lit per vertex).
+void appendMerged(VertexBatch& p, const VertexBatch& b) {
+  const size_t first = p.size();
+  if (p.materials.size() == 1 && b.materials.size() == 1) {
+    p.appendVertices(b, 0, b.size());
+    return;
+  }
+  const uint32_t offset = static_cast<uint32_t>(p.materials.size());
+  p.materials.insert(p.materials.end(), b.materials.begin(), b.materials.end());
+  p.appendVertices(b, 0, b.size());
+  for (size_t i = first; i < p.size(); ++i) p.materialIndex[i] += offset;
+}
+
 // vbo_exec_wrap_buffers: Mesa draws everything buffered, the open
 // primitive's first vertices as a draw of their own (not merged with the
 // pending ones), and goes on with the vertices vbo_copy_vertices keeps
@@ -126,18 +141,12 @@ void endPrimitive(Context& ctx) {
   } else if (count > 0) {
     b.mode = mode;
     b.resizeVertices(wholePrimitives(mode, count));
-    // A batch with glMaterial inside is drawn at once: its per-vertex material
-    // state (LightingAttrib::beginEndMaterialMask) belongs to it alone.
-    const bool perVertexMaterial = b.materials.size() > 1;
     VertexBatch& p = ctx.pending;
-    if (merged && !perVertexMaterial && p.size() > 0 && p.materials.size() == 1 && p.mode == mode) {
-      p.appendVertices(b, 0, b.size());
+    if (merged && p.size() > 0 && p.mode == mode) {
+      appendMerged(p, b);
     } else {
       drawPending(ctx);
-      if (perVertexMaterial)
-        drawBatch(ctx, b);
-      else
-        std::swap(p, b);  // b's vectors are reset at the next glBegin
+      std::swap(p, b);  // b's vectors are reset at the next glBegin
     }
   }
   if (store.primCount >= VboStore::kMaxPrimitives) {  // vbo_exec_vtx_flush, the format kept

@@ -254,10 +254,9 @@ void materialfv(GLenum face, GLenum pname, const GLfloat* params) {
     return;
   Context* ctx = currentContext();
   if (!ctx) return;
-  // Outside glBegin/glEnd Mesa's vbo takes the material as a vertex attribute:
-  // the buffered vertices are drawn, but the vertex format is kept (a colour
-  // already per-vertex data stays so).
-  if (!ctx->insideBeginEnd) pipeline::drawPending(*ctx);
+  // Outside glBegin/glEnd the buffered vertices are drawn (they were lit with
+  // the old material), but the vertex format is kept (a colour already
+  // per-vertex data stays so) unless Mesa resets it (see below).
   // The faces to update; components that follow the colour are left alone
   // while GL_COLOR_MATERIAL is on (Mesa skips them silently).
   uint32_t faces;  // bit 0 front, bit 1 back
@@ -291,6 +290,17 @@ void materialfv(GLenum face, GLenum pname, const GLfloat* params) {
   // Read only as many values as pname has.
   glm::vec4 v4(params[0], 0, 0, 0);
   if (bits & ~vertex::kMaterialShininess) v4 = glm::vec4(params[0], params[1], params[2], params[3]);
+  // Mesa's vbo takes each material component as a vertex attribute: one new
+  // to its vertex format grows it (pipeline::materialBecomesVertexData),
+  // which draws the buffered vertices first, with the old material.
+  uint32_t attributes = 0;  // MaterialBit, both faces; colour indexes as bits 10, 11
+  for (int f = 0; f < 2; ++f) {
+    if (!(faces & (1u << f))) continue;
+    attributes |= (bits & ~(tracked >> (f * vertex::kTrackBackShift))) << (f * vertex::kTrackBackShift);
+    if (pname == GL_COLOR_INDEXES) attributes |= 1u << (10 + f);
+  }
+  if (ctx->insideBeginEnd || ctx->vbo.verticesBuffered) pipeline::materialBecomesVertexData(*ctx, attributes);
+  if (!ctx->insideBeginEnd) pipeline::drawPending(*ctx);
   bool changed = false;
   uint32_t setMask = 0;  // MaterialBit, both faces
   for (int f = 0; f < 2; ++f) {
@@ -329,7 +339,8 @@ void materialfv(GLenum face, GLenum pname, const GLfloat* params) {
   // with glMaterial calls is one with more than one snapshot.
   VertexBatch& b = ctx->batch;
   if (b.materials.size() <= 1) {
-    lighting.beginEndMaterialMask = 0;
+    // (the pending draw may still be lit per vertex with the old mask)
+    if (ctx->pending.size() == 0 || ctx->pending.materials.size() <= 1) lighting.beginEndMaterialMask = 0;
     b.materials.push_back(lighting.material);
   } else if (changed) {
     const bool lastReferenced = !b.materialIndex.empty() && b.materialIndex.back() == b.materials.size() - 1;

@@ -100,6 +100,7 @@ void scale(float x, float y, float z) {
 
 extern "C" {
 
+// Mesa does not draw the buffered vertices at glMatrixMode.
 GLAPI void APIENTRY glMatrixMode(GLenum mode) {
   if (api::compiled(&glMatrixMode, mode)) return;
   Context* ctx = api::contextForSetter();

@@ -71,6 +71,9 @@ GLAPI GLboolean APIENTRY glIsEnabled(GLenum cap) {
   return GL_FALSE;
 }
 
+// Like Mesa, the setters below return before flushing the buffered vertices
+// when the value does not change (a redundant call does not cut a merged
+// draw); glClearColor and glClearDepth never draw them (probed on Mesa 22.3).
 GLAPI void APIENTRY glViewport(GLint x, GLint y, GLsizei width, GLsizei height) {
   if (api::compiled(&glViewport, x, y, width, height)) return;
   Context* ctx = api::contextForSetter();

@@ -1,5 +1,7 @@
 // glBegin/glEnd and the current vertex attributes: glVertex, glColor, glNormal
 // (GL 2.1 §2.6-§2.7), every variant.
+#include <type_traits>
+
 #include "api/api.h"
 #include "api/list_record.h"
 #include "api/normalized.h"
@@ -46,9 +48,11 @@ void color(int size, float r, float g, float b, float a) {
   }
 }
 
+// Only glColor3f and glColor3fv give Mesa's vbo a 3-component colour; the
+// other glColor3 variants go through its glColor4f(r, g, b, 1) (api_loopback.c).
 template <typename T>
 void color3(T r, T g, T b) {
-  color(3, normalized(r), normalized(g), normalized(b), 1.0f);
+  color(std::is_same_v<T, GLfloat> ? 3 : 4, normalized(r), normalized(g), normalized(b), 1.0f);
 }
 template <typename T>
 void color4(T r, T g, T b, T a) {

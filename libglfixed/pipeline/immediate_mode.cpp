@@ -32,6 +32,21 @@ void dropUnusedMaterials(VertexBatch& b) {
   for (uint32_t& i : b.materialIndex) i -= first;
 }
 
+// A primitive merged into the pending draw. With glMaterial inside either
+// of them the material snapshots are concatenated, so that each vertex keeps
+// its own (a batch with several snapshots is lit per vertex).
+void appendMerged(VertexBatch& p, const VertexBatch& b) {
+  const size_t first = p.size();
+  if (p.materials.size() == 1 && b.materials.size() == 1) {
+    p.appendVertices(b, 0, b.size());
+    return;
+  }
+  const uint32_t offset = static_cast<uint32_t>(p.materials.size());
+  p.materials.insert(p.materials.end(), b.materials.begin(), b.materials.end());
+  p.appendVertices(b, 0, b.size());
+  for (size_t i = first; i < p.size(); ++i) p.materialIndex[i] += offset;
+}
+
 // vbo_exec_wrap_buffers: Mesa draws everything buffered, the open
 // primitive's first vertices as a draw of their own (not merged with the
 // pending ones), and goes on with the vertices vbo_copy_vertices keeps
@@ -44,7 +59,9 @@ void wrapBuffers(Context& ctx) {
   if (ctx.insideBeginEnd && b.size() > 0) {
     const size_t count = b.size();
     const WrapSplit split = wrapSplit(b.mode, static_cast<uint32_t>(count));
-    if (split.drawn > split.copied) {
+    // The open primitive joins the last run when it has the same mode.
+    const bool suppressed = store.primCount >= 2 && b.mode == store.runMode && store.runSuppressed();
+    if (split.drawn > split.copied && !suppressed) {
       VertexBatch part;
       part.mode = b.mode;
       part.materials = b.materials;
@@ -105,26 +122,31 @@ void endPrimitive(Context& ctx) {
   if (merged) {
     --store.primCount;
     store.lastCount += count;
+    if (store.runDraws == 1) store.runFirstCount += count;  // merged into the run's first primitive
   } else {
     store.lastMode = mode;
     store.lastCount = count;
+    if (store.primCount >= 2 && mode == store.runMode) {
+      ++store.runDraws;
+    } else {  // a new run
+      store.runIndex = store.primCount >= 2 ? store.runIndex + 1 : 0;
+      store.runMode = mode;
+      store.runFirstCount = count;
+      store.runDraws = 1;
+    }
   }
-  if (count > 0) {
-    ctx.vbo.verticesBuffered = true;
+  if (count > 0) ctx.vbo.verticesBuffered = true;
+  if (count > 0 && store.runSuppressed()) {
+    b.clearVertices();  // Mesa draws nothing of it (VboStore::runSuppressed)
+  } else if (count > 0) {
     b.mode = mode;
     b.resizeVertices(wholePrimitives(mode, count));
-    // A batch with glMaterial inside is drawn at once: its per-vertex material
-    // state (LightingAttrib::beginEndMaterialMask) belongs to it alone.
-    const bool perVertexMaterial = b.materials.size() > 1;
     VertexBatch& p = ctx.pending;
-    if (merged && !perVertexMaterial && p.size() > 0 && p.materials.size() == 1 && p.mode == mode) {
-      p.appendVertices(b, 0, b.size());
+    if (merged && p.size() > 0 && p.mode == mode) {
+      appendMerged(p, b);
     } else {
       drawPending(ctx);
-      if (perVertexMaterial)
-        drawBatch(ctx, b);
-      else
-        std::swap(p, b);  // b's vectors are reset at the next glBegin
+      std::swap(p, b);  // b's vectors are reset at the next glBegin
     }
   }
   if (store.primCount >= VboStore::kMaxPrimitives) {  // vbo_exec_vtx_flush, the format kept
@@ -155,6 +177,21 @@ void normalBecomesVertexData(Context& ctx) {
 void positionGrows(Context& ctx, int size) {
   if (ctx.vbo.positionSize >= size) return;
   growVertexFormat(ctx, ctx.vbo.positionSize == 0, [size](Context::VboFormat& f) { f.positionSize = size; });
+}
+
+void materialBecomesVertexData(Context& ctx, uint32_t attributes) {
+  const uint32_t added = attributes & ~ctx.vbo.materialAttributes;
+  if (added == 0) return;
+  // Colours 4 floats, shininess 1 (bits 4 and 9), colour indexes 3 (bits 10, 11).
+  int floats = 0;
+  for (uint32_t bit = 0; bit < 12; ++bit) {
+    if (!(added & (1u << bit))) continue;
+    floats += (bit == 4 || bit == 9) ? 1 : (bit >= 10 ? 3 : 4);
+  }
+  growVertexFormat(ctx, true, [added, floats](Context::VboFormat& f) {
+    f.materialAttributes |= added;
+    f.materialFloats += floats;
+  });
 }
 
 }  // namespace glfixed::pipeline

@@ -6,6 +6,8 @@
 
 #include <GL/gl.h>
 
+#include <cstdint>
+
 namespace glfixed {
 class Context;
 }
@@ -38,5 +40,8 @@ void colorBecomesVertexData(Context& ctx, int size);
 void normalBecomesVertexData(Context& ctx);
 // And for the position: a glVertex3 after glVertex2 calls grows it.
 void positionGrows(Context& ctx, int size);
+// And for glMaterial: `attributes` are the material components the call sets
+// (MaterialBits of both faces; colour indexes as bits 10 and 11).
+void materialBecomesVertexData(Context& ctx, uint32_t attributes);
 
 }  // namespace glfixed::pipeline

@@ -28,6 +28,16 @@ struct VboStore {
   uint32_t primCount = 0;    // primitives since the last flush, after merging
   GLenum lastMode = 0;       // the last primitive's mode and vertex count, for merging
   uint32_t lastCount = 0;
+  // Mesa hands the primitives of a flush to the draw module in runs of one
+  // mode (st_draw_gallium_multimode). A run other than the first whose first
+  // primitive has no vertex draws nothing at all (measured: glBegin(GL_QUADS)
+  // with a quad, an empty glBegin/glEnd(GL_POLYGON), then polygons: the
+  // polygons are not drawn; without the quads they are).
+  GLenum runMode = 0;
+  uint32_t runIndex = 0;       // 0: the flush's first run
+  uint32_t runFirstCount = 0;  // the run's first primitive's vertices, merges included
+  uint32_t runDraws = 0;       // primitives in the run, after merging
+  bool runSuppressed() const { return runIndex > 0 && runFirstCount == 0; }
 
   uint32_t maxVertices(uint32_t vertexFloats) const {
     if (vertexFloats == 0) return 0;

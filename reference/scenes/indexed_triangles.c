@@ -3,9 +3,10 @@
  * segment that holds it goes through the clipping pipeline.
  *   - A draw is drawn whole, fetching and clip-testing every vertex of its
  *     index range (used or not), when the range is known (client arrays, or
- *     glDrawRangeElements), no wider than the draw, and the draw has at most
- *     4096 indices (16-bit, from 0) or 1024 (any other), and, in an element
- *     array buffer, ends before the buffer's last index.
+ *     glDrawRangeElements, its end clamped to the index type), no wider than
+ *     the draw, and the draw has at most 4096 indices (16-bit, from 0) or
+ *     1024 (any other), and, in an element array buffer, ends before the
+ *     buffer's last index.
  *   - Otherwise it is split into segments of 1023 indices (341 triangles),
  *     each clip-tested on the vertices it uses.
  * One row per case; a vertex outside the view is referenced in some
@@ -170,6 +171,12 @@ int main(int argc, char **argv)
     short_block(300, 10);
     arrays_client();
     glDrawRangeElements(GL_TRIANGLES, 0, 5000, ni, GL_UNSIGNED_INT, indices_as(GL_UNSIGNED_INT));
+
+    /* 8-bit indices: the range's end is clamped to 255, which makes it no
+     * wider than the 300 indices: drawn whole */
+    short_block(100, 10);
+    arrays_client();
+    glDrawRangeElements(GL_TRIANGLES, 0, 300, ni, GL_UNSIGNED_BYTE, indices_as(GL_UNSIGNED_BYTE));
 
     /* client arrays, indices in a buffer that ends with the list: split; one
      * index longer: drawn whole */

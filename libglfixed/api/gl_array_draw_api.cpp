@@ -44,14 +44,13 @@ bool resolve(Context& ctx, pipeline::ArraySources& src) {
   return error == GL_NO_ERROR;
 }
 
-// Reads `count` indices of `type` from client memory or, with an element
-// array buffer bound, from that buffer at offset `indices`. Indices past the
+// The `count` indices of `type` in client memory or, with an element array
+// buffer bound, in that buffer at offset `indices`; indices past the
 // buffer's end are not read (the draw ends there). False: the buffer is mapped.
-bool readIndices(Context& ctx, GLsizei count, GLenum type, const void* indices, std::vector<uint32_t>& out) {
-  out.clear();
+bool indexList(Context& ctx, GLsizei count, GLenum type, const void* indices, pipeline::IndexList& out) {
+  out = pipeline::IndexList();
+  out.type = type;
   const size_t bytes = type == GL_UNSIGNED_BYTE ? 1 : (type == GL_UNSIGNED_SHORT ? 2 : 4);
-  const uint8_t* p = static_cast<const uint8_t*>(indices);
-  size_t n = static_cast<size_t>(count);
   if (const GLuint name = ctx.vertexArray.elementArrayBufferBinding) {
     const BufferObject* b = ctx.buffers.find(name);
     if (b && b->mapped) {
@@ -61,22 +60,13 @@ bool readIndices(Context& ctx, GLsizei count, GLenum type, const void* indices, 
     const size_t offset = reinterpret_cast<uintptr_t>(indices);
     const size_t size = b ? b->data.size() : 0;
     const size_t available = offset >= size ? 0 : (size - offset) / bytes;
-    n = std::min(n, available);
-    p = n > 0 ? b->data.data() + offset : nullptr;
-  } else if (!p) {
-    return true;  // no indices: nothing to draw
-  }
-  out.resize(n);
-  for (size_t i = 0; i < n; ++i) {
-    if (bytes == 1) {
-      out[i] = p[i];
-    } else if (bytes == 2) {
-      uint16_t v;
-      std::memcpy(&v, p + 2 * i, 2);
-      out[i] = v;
-    } else {
-      std::memcpy(&out[i], p + 4 * i, 4);
-    }
+    out.count = static_cast<uint32_t>(std::min(static_cast<size_t>(count), available));
+    out.data = out.count > 0 ? b->data.data() + offset : nullptr;
+    out.firstInBuffer = offset / bytes;
+    out.bufferIndices = size / bytes;
+  } else if (indices) {
+    out.data = static_cast<const uint8_t*>(indices);
+    out.count = static_cast<uint32_t>(count);
   }
   return true;
 }
@@ -94,15 +84,18 @@ void guarded(Context& ctx, Draw draw) {
   }
 }
 
-void drawElements(Context& ctx, GLenum mode, GLsizei count, GLenum type, const void* indices) {
+// `range`: the bounds glDrawRangeElements promised, if Mesa takes them.
+void drawElements(Context& ctx, GLenum mode, GLsizei count, GLenum type, const void* indices,
+                  const pipeline::IndexBounds* range = nullptr) {
   pipeline::ArraySources src;
   if (!resolve(ctx, src)) return;
-  static thread_local std::vector<uint32_t> list;
-  bool read = false;
-  guarded(ctx, [&] { read = readIndices(ctx, count, type, indices, list); });
-  if (!read) return;
+  pipeline::IndexList list;
+  if (!indexList(ctx, count, type, indices, list)) return;
   pipeline::flushVertices(ctx);
-  guarded(ctx, [&] { pipeline::drawElements(ctx, src, mode, list); });
+  guarded(ctx, [&] {
+    const pipeline::IndexBounds bounds = range ? *range : pipeline::elementBounds(ctx, src, &list, 1);
+    pipeline::drawElements(ctx, src, mode, list, bounds);
+  });
 }
 
 // glArrayElement issues the glColor, glNormal and glVertex command of each
@@ -301,14 +294,22 @@ GLAPI void APIENTRY glDrawElements(GLenum mode, GLsizei count, GLenum type, cons
   drawElements(*ctx, mode, count, type, indices);
 }
 
-// The range is a promise about the indices (GL 2.1 §2.8); drawn as glDrawElements.
+// The range is a promise about the indices (GL 2.1 §2.8). Mesa passes it to
+// its draw module as the index bounds (which decide how the draw is split:
+// pipeline/array_draw.cpp), clamped to the index type's largest value, and
+// ignores it when it starts at 2,000,000,000 or more or ends past INT_MAX
+// (main/draw.c).
 GLAPI void APIENTRY glDrawRangeElements(GLenum mode, GLuint start, GLuint end, GLsizei count, GLenum type,
                                         const void* indices) {
   Context* ctx = drawContext(mode, count);
   if (!ctx) return;
   if (end < start) return ctx->recordError(GL_INVALID_VALUE);
   if (!isIndexType(type)) return ctx->recordError(GL_INVALID_ENUM);
-  drawElements(*ctx, mode, count, type, indices);
+  if (static_cast<GLint>(end) < 0 || start >= 2000000000u)
+    return drawElements(*ctx, mode, count, type, indices);
+  const GLuint largest = type == GL_UNSIGNED_BYTE ? 0xffu : (type == GL_UNSIGNED_SHORT ? 0xffffu : ~0u);
+  const pipeline::IndexBounds range{true, std::min(start, largest), std::min(end, largest)};
+  drawElements(*ctx, mode, count, type, indices, &range);
 }
 
 // Each draw of a multi-draw is a draw of its own (Mesa hands them to the
@@ -336,7 +337,20 @@ GLAPI void APIENTRY glMultiDrawElements(GLenum mode, const GLsizei* count, GLenu
   if (drawcount == 0 || !count || !indices) return;
   for (GLsizei i = 0; i < drawcount; ++i)
     if (count[i] < 0) return ctx->recordError(GL_INVALID_VALUE);
-  for (GLsizei i = 0; i < drawcount; ++i) drawElements(*ctx, mode, count[i], type, indices[i]);
+  pipeline::ArraySources src;
+  if (!resolve(*ctx, src)) return;
+  static thread_local std::vector<pipeline::IndexList> lists;
+  guarded(*ctx, [&] { lists.resize(static_cast<size_t>(drawcount)); });
+  if (lists.size() != static_cast<size_t>(drawcount)) return;
+  for (GLsizei i = 0; i < drawcount; ++i)
+    if (!indexList(*ctx, count[i], type, indices[i], lists[i])) return;
+  pipeline::flushVertices(*ctx);
+  // One draw of several to Mesa's draw module: the index bounds it computes
+  // are those of all the lists together.
+  guarded(*ctx, [&] {
+    const pipeline::IndexBounds bounds = pipeline::elementBounds(*ctx, src, lists.data(), lists.size());
+    for (const pipeline::IndexList& list : lists) pipeline::drawElements(*ctx, src, mode, list, bounds);
+  });
 }
 
 }  // extern "C"

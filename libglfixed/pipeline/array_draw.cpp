@@ -1,6 +1,8 @@
 #include "pipeline/array_draw.h"
 
 #include <algorithm>
+#include <cstring>
+#include <vector>
 
 #include "pipeline/draw.h"
 #include "primitive/assemble.h"
@@ -12,10 +14,22 @@ namespace {
 
 using Submission = primitive::PrimitiveState::Submission;
 
-// How many of Mesa's draw segments (primitive/assemble.h) one chunk holds: a
-// chunk is fetched, shaded and drawn before the next is read, so a draw of
-// millions of vertices never holds more than this many at once.
+// How many of Mesa's draw segments (primitive/assemble.h) one chunk of a
+// glDrawArrays holds: a chunk is fetched, shaded and drawn before the next is
+// read, so a draw of millions of vertices never holds more than this many at
+// once.
 constexpr size_t kSegmentsPerChunk = 4;
+
+// Mesa's vsplit (draw_pt_vsplit_tmp.h, vsplit_primitive) draws an indexed
+// draw whole, fetching every vertex of its index range, when the range is
+// known, no wider than the draw, and the draw is at most the llvm middle
+// end's 4096 vertices (16-bit indices from 0, used as they are) or the
+// 1024-index segment (any other).
+constexpr uint32_t kMaxWholeShortDraw = 4096;
+constexpr uint32_t kMaxWholeDraw = primitive::kMaxIndexedSegment;
+
+// Points and lines are chunked by this many vertices (see drawLines).
+constexpr uint32_t kLineChunk = 4096;
 
 // Elements past the end of a vertex array in a buffer object all read as the
 // same point, so every primitive made only of them is degenerate and draws
@@ -33,28 +47,134 @@ uint32_t countWithinBuffer(const ArrayView& v, uint32_t first, uint32_t count) {
   return static_cast<uint32_t>(std::min<size_t>(count, kept));
 }
 
+bool isPointsOrLines(GLenum mode) {
+  return mode == GL_POINTS || mode == GL_LINES || mode == GL_LINE_LOOP || mode == GL_LINE_STRIP;
+}
+
+// Appends the elements at draw positions [from, to) to `batch`; `elementAt`
+// maps a position of the draw to its array element.
+template <typename ElementAt>
+void appendPositions(const ArraySources& src, const Context& ctx, const ElementAt& elementAt, size_t from,
+                     size_t to, VertexBatch& batch) {
+  static thread_local std::vector<uint32_t> elements;
+  elements.clear();
+  for (size_t k = from; k < to; ++k) elements.push_back(elementAt(k));
+  appendIndexed(src, ctx, elements.data(), elements.size(), batch);
+}
+
+// Mesa's segments of a draw of `count` vertices, each drawn as a batch of its
+// own: a batch of one segment is drawn as that segment again (primitive/
+// draw_primitives.cpp). A segment whose first vertex is replaced by the
+// draw's first (fans and polygons after their first segment) is drawn
+// indexed, as Mesa draws it.
+template <typename ElementAt>
+void drawSegments(Context& ctx, const ArraySources& src, GLenum mode,
+                  const std::vector<primitive::Segment>& segments, const ElementAt& elementAt,
+                  Submission submission) {
+  static thread_local VertexBatch batch;
+  for (const primitive::Segment& seg : segments) {
+    batch.reset(mode, ctx.lighting.material);
+    if (seg.hubReplaced) {
+      appendPositions(src, ctx, elementAt, 0, 1, batch);
+      appendPositions(src, ctx, elementAt, seg.start + 1, seg.start + seg.count, batch);
+    } else {
+      appendPositions(src, ctx, elementAt, seg.start, seg.start + seg.count, batch);
+    }
+    drawBatch(ctx, batch, seg.hubReplaced ? Submission::kDrawElements : submission, src.color);
+  }
+}
+
+// Points and lines are not rasterized yet; in GL_SELECT and GL_FEEDBACK each
+// point and line is reported alone (Mesa never writes a line reset token), so
+// chunks that keep the same primitives in the same order give the same
+// result: strips overlap by one vertex, a loop becomes strips and its
+// closing line.
+template <typename ElementAt>
+void drawPointsOrLines(Context& ctx, const ArraySources& src, GLenum mode, uint32_t count,
+                       const ElementAt& elementAt, Submission submission) {
+  count = primitive::trimVertexCount(mode, count);
+  if (count == 0) return;
+  static thread_local VertexBatch batch;
+  const bool strip = mode == GL_LINE_STRIP || mode == GL_LINE_LOOP;
+  const GLenum chunkMode = count <= kLineChunk ? mode : (mode == GL_LINE_LOOP ? GL_LINE_STRIP : mode);
+  for (uint32_t start = 0;;) {
+    const uint32_t end = std::min(count, start + kLineChunk);
+    batch.reset(chunkMode, ctx.lighting.material);
+    appendPositions(src, ctx, elementAt, start, end, batch);
+    const bool last = end == count;
+    if (last && chunkMode != mode) appendPositions(src, ctx, elementAt, 0, 1, batch);  // the closing line
+    drawBatch(ctx, batch, submission, src.color);
+    if (last) return;
+    start = strip ? end - 1 : end;
+  }
+}
+
+bool isClientMemory(const ArrayView& v) { return v.limit == SIZE_MAX; }
+
+// vsplit_primitive's conditions (see kMaxWholeDraw).
+bool drawnWhole(const IndexList& list, uint32_t count, const IndexBounds& b) {
+  if (!b.valid || b.max < b.min) return false;
+  // The list must end before the last index of its buffer.
+  if (list.bufferIndices != SIZE_MAX && list.firstInBuffer + count >= list.bufferIndices) return false;
+  const bool asTheyAre = b.min == 0 && list.type == GL_UNSIGNED_SHORT;
+  if (count > (asTheyAre ? kMaxWholeShortDraw : kMaxWholeDraw)) return false;
+  return b.max - b.min <= count - 1;
+}
+
 }  // namespace
+
+uint32_t IndexList::at(size_t i) const {
+  switch (type) {
+    case GL_UNSIGNED_BYTE: return data[i];
+    case GL_UNSIGNED_SHORT: {
+      uint16_t v;
+      std::memcpy(&v, data + 2 * i, 2);
+      return v;
+    }
+    default: {
+      uint32_t v;
+      std::memcpy(&v, data + 4 * i, 4);
+      return v;
+    }
+  }
+}
+
+IndexBounds elementBounds(const Context& ctx, const ArraySources& src, const IndexList* lists, size_t count) {
+  // The fixed-function vertex shader reads the position, the colour unless
+  // lighting without colour material, and the normal when lighting.
+  const bool lit = ctx.lighting.lighting;
+  const bool readsClientArray =
+      (src.vertex && isClientMemory(src.vertexView)) ||
+      (src.color && (!lit || ctx.lighting.colorMaterial) && isClientMemory(src.colorView)) ||
+      (src.normal && lit && isClientMemory(src.normalView));
+  IndexBounds b;
+  if (!readsClientArray) return b;
+  b.min = UINT32_MAX;
+  for (size_t d = 0; d < count; ++d)
+    for (uint32_t i = 0; i < lists[d].count; ++i) {
+      const uint32_t e = lists[d].at(i);
+      b.min = std::min(b.min, e);
+      b.max = std::max(b.max, e);
+      b.valid = true;
+    }
+  return b;
+}
 
 void drawArrays(Context& ctx, const ArraySources& src, GLenum mode, uint32_t first, uint32_t count) {
   if (!src.vertex) return;  // no vertex array: nothing is drawn (GL 2.1 §2.8)
   count = countWithinBuffer(src.vertexView, first, count);
   if (count == 0) return;
-  static thread_local VertexBatch batch;
-  // Mesa's draw module splits a long draw into segments and decides for each
-  // alone whether it needs clipping (assemble.h). A chunk of whole segments,
-  // drawn as a batch of its own, splits into the same segments again: every
-  // segment of a non-fan mode starts at a multiple of its step (strips keep
-  // their parity) and the chunk's own split reproduces them. Fans and
-  // polygons share vertex 0 across segments: they are drawn whole.
+  auto elementAt = [first](size_t k) { return first + static_cast<uint32_t>(k); };
+  if (isPointsOrLines(mode))
+    return drawPointsOrLines(ctx, src, mode, count, elementAt, Submission::kDrawArrays);
   static thread_local std::vector<primitive::Segment> segments;
-  const bool fan = mode == GL_TRIANGLE_FAN || mode == GL_POLYGON;
   primitive::splitIntoSegments(mode, count, segments);
-  if (fan || segments.size() <= kSegmentsPerChunk) {
-    batch.reset(mode, ctx.lighting.material);
-    appendRange(src, ctx, first, count, batch);
-    drawBatch(ctx, batch, Submission::kDrawArrays, src.color);
-    return;
-  }
+  if (mode == GL_TRIANGLE_FAN || mode == GL_POLYGON)
+    return drawSegments(ctx, src, mode, segments, elementAt, Submission::kDrawArrays);
+  // Every segment of the other modes starts at a multiple of its step (strips
+  // keep their parity), so a chunk of whole segments drawn as a batch of its
+  // own splits into the same segments again.
+  static thread_local VertexBatch batch;
   for (size_t s = 0; s < segments.size(); s += kSegmentsPerChunk) {
     const size_t last = std::min(segments.size(), s + kSegmentsPerChunk) - 1;
     const uint32_t start = segments[s].start;
@@ -65,12 +185,30 @@ void drawArrays(Context& ctx, const ArraySources& src, GLenum mode, uint32_t fir
   }
 }
 
-void drawElements(Context& ctx, const ArraySources& src, GLenum mode, const std::vector<uint32_t>& indices) {
-  if (!src.vertex || indices.empty()) return;
-  static thread_local VertexBatch batch;
-  batch.reset(mode, ctx.lighting.material);
-  appendIndexed(src, ctx, indices.data(), indices.size(), batch);
-  drawBatch(ctx, batch, Submission::kDrawElements, src.color);
+void drawElements(Context& ctx, const ArraySources& src, GLenum mode, const IndexList& indices,
+                  const IndexBounds& bounds) {
+  if (!src.vertex || indices.count == 0) return;
+  auto elementAt = [&indices](size_t k) { return indices.at(k); };
+  if (isPointsOrLines(mode))
+    return drawPointsOrLines(ctx, src, mode, indices.count, elementAt, Submission::kDrawElements);
+  const uint32_t count = primitive::trimVertexCount(mode, indices.count);
+  if (count == 0) return;
+  if (drawnWhole(indices, count, bounds)) {
+    // Mesa fetches and clip-tests every vertex of the range, used or not: one
+    // outside sends the whole draw through its pipeline.
+    static thread_local VertexBatch batch, range;
+    batch.reset(mode, ctx.lighting.material);
+    appendPositions(src, ctx, elementAt, 0, count, batch);
+    range.reset(mode, ctx.lighting.material);
+    appendRange(src, ctx, bounds.min, bounds.max - bounds.min + 1, range);
+    drawBatch(ctx, batch, Submission::kDrawElements, src.color, anyVertexOutside(ctx, range));
+    return;
+  }
+  // Otherwise segments of at most 1024 indices, each fetching only the
+  // vertices it uses (vsplit's vertex cache) and clip-tested alone.
+  static thread_local std::vector<primitive::Segment> segments;
+  primitive::splitIntoSegments(mode, count, segments, primitive::kMaxIndexedSegment);
+  drawSegments(ctx, src, mode, segments, elementAt, Submission::kDrawElements);
 }
 
 }  // namespace glfixed::pipeline

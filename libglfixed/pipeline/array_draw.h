@@ -1,11 +1,12 @@
-// glDrawArrays and glDrawElements after validation: fetch the arrays into a
-// VertexBatch and draw it, a long draw in bounded chunks.
+// glDrawArrays and glDrawElements after validation: fetch the arrays into
+// VertexBatches and draw them in Mesa's segments, a few thousand vertices at
+// a time, so that memory stays bounded for a draw of any length.
 #pragma once
 
 #include <GL/gl.h>
 
+#include <cstddef>
 #include <cstdint>
-#include <vector>
 
 #include "pipeline/array_fetch.h"
 
@@ -18,7 +19,36 @@ namespace glfixed::pipeline {
 // Elements first..first+count-1 as GL_<mode>.
 void drawArrays(Context& ctx, const ArraySources& src, GLenum mode, uint32_t first, uint32_t count);
 
+// The indices of an indexed draw, read where they lie (client memory or an
+// element array buffer), never copied whole.
+struct IndexList {
+  const uint8_t* data = nullptr;  // the first index
+  GLenum type = GL_UNSIGNED_INT;  // GL_UNSIGNED_BYTE, _SHORT or _INT
+  uint32_t count = 0;
+  // Where the list lies in its element array buffer, in indices: the
+  // position of its first index and the buffer's size. Client memory is
+  // unbounded. (Mesa draws a list whole only if it ends before the
+  // buffer's last index: array_draw.cpp.)
+  size_t firstInBuffer = 0;
+  size_t bufferIndices = SIZE_MAX;
+  uint32_t at(size_t i) const;
+};
+
+// The range of the indices, as the program promised it (glDrawRangeElements)
+// or as Mesa computes it; `valid` false: Mesa knows no range.
+struct IndexBounds {
+  bool valid = false;
+  uint32_t min = 0, max = 0;
+};
+
+// The bounds Mesa knows for a glDrawElements or glMultiDrawElements: it
+// computes them over every index of `lists` only when the vertex shader
+// reads an array from client memory (st_atom_array.c,
+// draw_needs_minmax_index); otherwise none.
+IndexBounds elementBounds(const Context& ctx, const ArraySources& src, const IndexList* lists, size_t count);
+
 // The elements `indices` as GL_<mode> (an indexed draw in Mesa's terms).
-void drawElements(Context& ctx, const ArraySources& src, GLenum mode, const std::vector<uint32_t>& indices);
+void drawElements(Context& ctx, const ArraySources& src, GLenum mode, const IndexList& indices,
+                  const IndexBounds& bounds);
 
 }  // namespace glfixed::pipeline

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "primitive/clip.h"
 #include "primitive/primitive.h"
 #include "primitive/select_feedback.h"
 #include "state/context.h"
@@ -47,7 +48,7 @@ void drawBatch(Context& ctx, const VertexBatch& batch) {
 }
 
 void drawBatch(Context& ctx, const VertexBatch& batch, primitive::PrimitiveState::Submission submission,
-               bool colorIsVertexData) {
+               bool colorIsVertexData, bool fetchedVertexOutside) {
   if (!ctx.framebuffer.bound() || batch.size() == 0) return;
   const vertex::VertexState& vs = ctx.validate();
   static thread_local ShadedVertices shaded;  // reused: no allocation per batch
@@ -55,6 +56,7 @@ void drawBatch(Context& ctx, const VertexBatch& batch, primitive::PrimitiveState
   primitive::PrimitiveState ps = primitiveState(ctx, batch.mode, shaded.hasSecondary);
   ps.submission = submission;
   ps.constantPrimary = !vs.lighting && !colorIsVertexData;
+  ps.fetchedVertexOutside = fetchedVertexOutside;
   // GL_SELECT and GL_FEEDBACK: transformed and clipped, never rasterized (§5.2, §5.3).
   if (ctx.renderMode.mode == GL_SELECT)
     return primitive::selectPrimitives(ps, shaded, ctx.framebuffer.height(), ctx.renderMode.select);
@@ -62,6 +64,16 @@ void drawBatch(Context& ctx, const VertexBatch& batch, primitive::PrimitiveState
     return primitive::feedbackPrimitives(ps, shaded, ctx.framebuffer.height(), ctx.current.texCoord[0],
                                          ctx.renderMode.feedback);
   primitive::drawPrimitives(ps, shaded, ctx.framebuffer);
+}
+
+bool anyVertexOutside(Context& ctx, const VertexBatch& batch) {
+  if (batch.size() == 0) return false;
+  const vertex::VertexState& vs = ctx.validate();
+  static thread_local ShadedVertices shaded;
+  vertex::shadeBatch(vs, batch, shaded);
+  for (const glm::vec4& c : shaded.clip)
+    if (primitive::clipMask(c) != 0) return true;
+  return false;
 }
 
 }  // namespace glfixed::pipeline

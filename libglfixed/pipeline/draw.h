@@ -14,8 +14,13 @@ namespace glfixed::pipeline {
 // A glBegin/glEnd batch (the colour is vertex data as Context::vbo says).
 void drawBatch(Context& ctx, const VertexBatch& batch);
 // A batch of another submission: vertex arrays say themselves whether the
-// colour is vertex data (a colour array is enabled).
+// colour is vertex data (a colour array is enabled). `fetchedVertexOutside`:
+// see PrimitiveState.
 void drawBatch(Context& ctx, const VertexBatch& batch, primitive::PrimitiveState::Submission submission,
-               bool colorIsVertexData);
+               bool colorIsVertexData, bool fetchedVertexOutside = false);
+
+// Whether some vertex of `batch` is outside the view volume once
+// transformed (Mesa's clip test of the vertices it fetched).
+bool anyVertexOutside(Context& ctx, const VertexBatch& batch);
 
 }  // namespace glfixed::pipeline

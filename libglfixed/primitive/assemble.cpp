@@ -128,16 +128,19 @@ uint32_t trimVertexCount(GLenum mode, uint32_t count) {
   return count - (count - first) % step;
 }
 
-void splitIntoSegments(GLenum mode, uint32_t count, std::vector<Segment>& out) {
+void splitIntoSegments(GLenum mode, uint32_t count, std::vector<Segment>& out, uint32_t maxSimple) {
   out.clear();
   count = trimVertexCount(mode, count);
   if (count == 0) return;
-  const bool fan = mode == GL_TRIANGLE_FAN || mode == GL_POLYGON;
-  const uint32_t limit = fan ? kMaxFanSegment : kMaxSimpleSegment;
-  if (count <= limit) {
+  // A draw that fits one simple segment is one, whatever its mode
+  // (draw_split_tmp.h tests that first); only a longer fan or polygon is
+  // split at the fan limit.
+  if (count <= maxSimple) {
     out.push_back({0, count, false});
     return;
   }
+  const bool fan = mode == GL_TRIANGLE_FAN || mode == GL_POLYGON;
+  const uint32_t limit = fan ? kMaxFanSegment : maxSimple;
   uint32_t first = 3, step = 1;
   if (mode == GL_TRIANGLES) step = 3;
   if (mode == GL_QUADS) first = 4, step = 4;

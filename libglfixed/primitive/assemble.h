@@ -49,16 +49,22 @@ uint32_t trimVertexCount(GLenum mode, uint32_t count);
 // (draw_pt_vsplit.c, draw_split_tmp.h), and decides per segment whether to
 // run its pipeline. Triangles, strips, quads and quad strips: at most 4096
 // vertices a segment, strips overlapping by 2 vertices and keeping an even
-// number of triangles a segment. Fans and polygons: at most 1024, and every
-// segment after the first is drawn indexed, with its first vertex replaced by
-// vertex 0 (the hub).
+// number of triangles a segment. Fans and polygons of more than 4096: at most
+// 1024 a segment, and every segment after the first is drawn indexed, with
+// its first vertex replaced by vertex 0 (the hub); up to 4096 they are one
+// segment (scene indexed_modes). An indexed draw is split the same way with at most
+// 1024 indices a segment for every mode (vsplit's segment size), unless it
+// is drawn whole (pipeline/array_draw.cpp).
 constexpr uint32_t kMaxSimpleSegment = 4096;
 constexpr uint32_t kMaxFanSegment = 1024;
+constexpr uint32_t kMaxIndexedSegment = 1024;
 struct Segment {
   uint32_t start = 0, count = 0;
   bool hubReplaced = false;  // vertex list (0, start+1, ..., start+count-1), indexed
 };
-void splitIntoSegments(GLenum mode, uint32_t count, std::vector<Segment>& out);
+// `maxSimple`: the segment limit of the modes that are not fans or polygons.
+void splitIntoSegments(GLenum mode, uint32_t count, std::vector<Segment>& out,
+                       uint32_t maxSimple = kMaxSimpleSegment);
 
 // The slot of each triple that holds the provoking vertex.
 inline int provokingSlot(bool firstVertexConvention) { return firstVertexConvention ? 0 : 2; }

@@ -154,7 +154,7 @@ void drawSegment(BatchContext& b, GLenum mode, const Segment& seg, bool indexed,
   auto global = [&](uint32_t local) { return (seg.hubReplaced && local == 0) ? 0u : seg.start + local; };
   uint32_t anyOutside = 0;
   for (uint32_t i = 0; i < seg.count; ++i) anyOutside |= masks[global(i)];
-  b.pipeline = anyOutside != 0;
+  b.pipeline = anyOutside != 0 || state.fetchedVertexOutside;
   const DecomposePath path =
       b.pipeline ? DecomposePath::kPipeline
                  : ((indexed || seg.hubReplaced) ? DecomposePath::kIndexed : DecomposePath::kLinear);
@@ -237,7 +237,8 @@ void drawPrimitives(const PrimitiveState& state, const ShadedVertices& vertices,
   if (state.submission == Submission::kBeginEnd && n == 3 &&
       (mode == GL_TRIANGLE_STRIP || mode == GL_TRIANGLE_FAN))
     mode = GL_TRIANGLES;
-  // Indexed draws are segmented otherwise (not modelled yet): one segment.
+  // An indexed batch is one of Mesa's segments (pipeline/array_draw.cpp
+  // splits indexed draws).
   if (indexed)
     segments.assign(1, Segment{0, n, false});
   else

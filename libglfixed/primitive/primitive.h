@@ -37,6 +37,11 @@ struct PrimitiveState {
   // quads split as when smooth, assemble.h). Every vertex then carries that
   // colour; vertex 0's is used. Measured with glColor before glBegin.
   bool constantPrimary = false;
+  // Mesa fetched and tested a vertex with this draw that no primitive of it
+  // uses, and it is outside the view volume: the draw runs the draw
+  // module's pipeline as if one of its own were (an indexed draw drawn whole
+  // fetches its whole index range: pipeline/array_draw.cpp).
+  bool fetchedVertexOutside = false;
   bool constantSecondary = false;
   raster::RasterState raster;  // depth test, scissor to the viewport, ...
 };

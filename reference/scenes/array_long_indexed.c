@@ -1,8 +1,8 @@
 /* A long indexed draw: 60,000 random small triangles (GL_TRIANGLES through
  * glDrawElements), back-face culling on, one vertex at the end far outside
  * the view, so the draw needs Mesa's clipping pipeline somewhere; and a long
- * indexed GL_QUADS draw. Checks that libglfixed's one-segment model of
- * indexed draws gives Mesa's pixels. */
+ * indexed GL_QUADS draw. (How Mesa splits indexed draws is shown by the
+ * indexed_* scenes.) */
 #include "scene.h"
 
 #define NT 60000

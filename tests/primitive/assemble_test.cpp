@@ -112,8 +112,20 @@ TEST(Segments, LongPrimitivesSplitLikeTheDrawModule) {
   EXPECT_EQ(s[0].count, 4096u);  // 4094 triangles
   EXPECT_EQ(s[1].start, 4094u);
   EXPECT_EQ(s[1].count, 907u);
-  // Fans: 1024 at a time; later segments swap their first vertex for the hub.
-  splitIntoSegments(GL_TRIANGLE_FAN, 2500, s);
+  // Fans up to 4096 vertices are one segment (scene indexed_modes); longer
+  // ones 1024 at a time, later segments swapping their first vertex for the hub.
+  splitIntoSegments(GL_TRIANGLE_FAN, 4096, s);
+  ASSERT_EQ(s.size(), 1u);
+  splitIntoSegments(GL_TRIANGLE_FAN, 5000, s);
+  ASSERT_EQ(s.size(), 5u);
+  EXPECT_TRUE(s[4].hubReplaced);
+  EXPECT_EQ(s[4].start, 4088u);
+  EXPECT_EQ(s[4].start + s[4].count, 5000u);
+  // Indexed draws: 1024 indices a segment for every mode.
+  splitIntoSegments(GL_TRIANGLES, 2000, s, kMaxIndexedSegment);
+  ASSERT_EQ(s.size(), 2u);
+  EXPECT_EQ(s[1].start, 1023u);
+  splitIntoSegments(GL_TRIANGLE_FAN, 2500, s, kMaxIndexedSegment);
   ASSERT_EQ(s.size(), 3u);
   EXPECT_FALSE(s[0].hubReplaced);
   EXPECT_TRUE(s[1].hubReplaced);

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "api/api.h"
+#include "api/list_record.h"
 #include "pipeline/array_draw.h"
 
 using namespace glfixed;
@@ -252,18 +253,9 @@ void arrayTexCoord(const pipeline::ArrayView& a, uint32_t i, GLenum unit) {
   }
 }
 
-}  // namespace
-
-extern "C" {
-
-// Inside glBegin/glEnd, element i is the glColor, glNormal and glVertex calls
-// it stands for (GL 2.1 §2.8), through the immediate-mode path.
-GLAPI void APIENTRY glArrayElement(GLint i) {
-  Context* ctx = api::context();
-  if (!ctx || i < 0) return;
-  pipeline::ArraySources src;
-  if (!resolve(*ctx, src)) return;
-  const uint32_t e = static_cast<uint32_t>(i);
+// Element e as the glEdgeFlag, glTexCoord, ..., glColor, glNormal and
+// glVertex calls it stands for (GL 2.1 §2.8).
+void arrayElement(const pipeline::ArraySources& src, uint32_t e) {
   if (src.edgeFlag) arrayEdgeFlag(src.edgeFlagView, e);
   for (int u = 0; u < kMaxTextureCoords; ++u)
     if (src.texCoord[u]) arrayTexCoord(src.texCoordView[u], e, GL_TEXTURE0 + u);
@@ -275,7 +267,70 @@ GLAPI void APIENTRY glArrayElement(GLint i) {
   if (src.vertex) arrayVertex(src.vertexView, e);  // last: it emits the vertex
 }
 
+// ---- In a display list (§5.4) -----------------------------------------------
+// A draw is compiled as the glBegin/glEnd it stands for, its elements read
+// now through glArrayElement's calls into the list's vertex node (Mesa's
+// save_DrawArrays, save_DrawElements): it merges with the glBegin/glEnd
+// pairs around it as they merge with each other. Errors are compiled.
+
+// The enabled arrays, or a compiled error if one sources a mapped buffer.
+bool resolveForList(pipeline::ListCompiler& list, pipeline::ArraySources& src) {
+  if (pipeline::resolveArrays(*currentContext(), src) == GL_NO_ERROR) return true;
+  list.recordError(*currentContext(), GL_INVALID_OPERATION);
+  return false;
+}
+
+void compileDrawArrays(pipeline::ListCompiler& list, GLenum mode, GLint first, GLsizei count) {
+  Context& ctx = *currentContext();
+  if (!isPrimitiveMode(mode)) return list.recordError(ctx, GL_INVALID_ENUM);
+  if (count < 0 || first < 0) return list.recordError(ctx, GL_INVALID_VALUE);
+  pipeline::ArraySources src;
+  if (!resolveForList(list, src)) return;
+  list.begin(mode, true);
+  for (GLsizei i = 0; i < count; ++i)
+    arrayElement(src, static_cast<uint32_t>(first) + static_cast<uint32_t>(i));
+  list.end();
+}
+
+void compileDrawElements(pipeline::ListCompiler& list, GLenum mode, GLsizei count, GLenum type,
+                         const void* indices) {
+  Context& ctx = *currentContext();
+  if (!isPrimitiveMode(mode)) return list.recordError(ctx, GL_INVALID_ENUM);
+  if (count < 0) return list.recordError(ctx, GL_INVALID_VALUE);
+  if (!isIndexType(type)) return list.recordError(ctx, GL_INVALID_ENUM);
+  pipeline::ArraySources src;
+  if (!resolveForList(list, src)) return;
+  if (const BufferObject* b = ctx.buffers.find(ctx.vertexArray.elementArrayBufferBinding); b && b->mapped)
+    return list.recordError(ctx, GL_INVALID_OPERATION);
+  std::vector<uint32_t> elements;
+  readIndices(ctx, count, type, indices, elements);
+  list.begin(mode, true);
+  for (uint32_t e : elements) arrayElement(src, e);
+  list.end();
+}
+
+}  // namespace
+
+extern "C" {
+
+// Inside glBegin/glEnd, element i is the glColor, glNormal and glVertex calls
+// it stands for (GL 2.1 §2.8), through the immediate-mode path.
+// In a list, those calls are compiled with the element's values (inside the
+// list's glBegin/glEnd they join its vertex node).
+GLAPI void APIENTRY glArrayElement(GLint i) {
+  Context* ctx = api::context();
+  if (!ctx || i < 0) return;
+  pipeline::ArraySources src;
+  if (pipeline::ListCompiler* list = api::listCompiler(ctx)) {
+    if (resolveForList(*list, src)) arrayElement(src, static_cast<uint32_t>(i));
+    return;
+  }
+  if (!resolve(*ctx, src)) return;
+  arrayElement(src, static_cast<uint32_t>(i));
+}
+
 GLAPI void APIENTRY glDrawArrays(GLenum mode, GLint first, GLsizei count) {
+  if (api::compiledDraw([&](pipeline::ListCompiler& l) { compileDrawArrays(l, mode, first, count); })) return;
   Context* ctx = drawContext(mode, count);
   if (!ctx) return;
   if (first < 0) return ctx->recordError(GL_INVALID_VALUE);
@@ -288,6 +343,9 @@ GLAPI void APIENTRY glDrawArrays(GLenum mode, GLint first, GLsizei count) {
 }
 
 GLAPI void APIENTRY glDrawElements(GLenum mode, GLsizei count, GLenum type, const void* indices) {
+  if (api::compiledDraw(
+          [&](pipeline::ListCompiler& l) { compileDrawElements(l, mode, count, type, indices); }))
+    return;
   Context* ctx = drawContext(mode, count);
   if (!ctx) return;
   if (!isIndexType(type)) return ctx->recordError(GL_INVALID_ENUM);
@@ -301,6 +359,13 @@ GLAPI void APIENTRY glDrawElements(GLenum mode, GLsizei count, GLenum type, cons
 // (main/draw.c).
 GLAPI void APIENTRY glDrawRangeElements(GLenum mode, GLuint start, GLuint end, GLsizei count, GLenum type,
                                         const void* indices) {
+  // Mesa's save_DrawRangeElements: the checks, then compiled as glDrawElements.
+  if (api::compiledDraw([&](pipeline::ListCompiler& l) {
+        if (isPrimitiveMode(mode) && count >= 0 && isIndexType(type) && end < start)
+          return l.recordError(*currentContext(), GL_INVALID_VALUE);
+        compileDrawElements(l, mode, count, type, indices);
+      }))
+    return;
   Context* ctx = drawContext(mode, count);
   if (!ctx) return;
   if (end < start) return ctx->recordError(GL_INVALID_VALUE);
@@ -316,6 +381,18 @@ GLAPI void APIENTRY glDrawRangeElements(GLenum mode, GLuint start, GLuint end, G
 // draw module one by one).
 GLAPI void APIENTRY glMultiDrawArrays(GLenum mode, const GLint* first, const GLsizei* count,
                                       GLsizei drawcount) {
+  // Mesa's save_MultiDrawArrays: the checks, then each draw compiled as glDrawArrays.
+  if (api::compiledDraw([&](pipeline::ListCompiler& l) {
+        Context& c = *currentContext();
+        if (!isPrimitiveMode(mode)) return l.recordError(c, GL_INVALID_ENUM);
+        if (drawcount < 0) return l.recordError(c, GL_INVALID_VALUE);
+        if (drawcount == 0 || !first || !count) return;
+        for (GLsizei i = 0; i < drawcount; ++i)
+          if (count[i] < 0 || first[i] < 0) return l.recordError(c, GL_INVALID_VALUE);
+        for (GLsizei i = 0; i < drawcount; ++i)
+          if (count[i] > 0) compileDrawArrays(l, mode, first[i], count[i]);
+      }))
+    return;
   Context* ctx = drawContext(mode, drawcount);
   if (!ctx || drawcount == 0 || !first || !count) return;
   for (GLsizei i = 0; i < drawcount; ++i)
@@ -331,6 +408,16 @@ GLAPI void APIENTRY glMultiDrawArrays(GLenum mode, const GLint* first, const GLs
 
 GLAPI void APIENTRY glMultiDrawElements(GLenum mode, const GLsizei* count, GLenum type,
                                         const void* const* indices, GLsizei drawcount) {
+  if (api::compiledDraw([&](pipeline::ListCompiler& l) {
+        Context& c = *currentContext();
+        if (!isPrimitiveMode(mode)) return l.recordError(c, GL_INVALID_ENUM);
+        if (drawcount < 0) return l.recordError(c, GL_INVALID_VALUE);
+        if (!isIndexType(type)) return l.recordError(c, GL_INVALID_ENUM);
+        if (drawcount == 0 || !count || !indices) return;
+        for (GLsizei i = 0; i < drawcount; ++i)
+          if (count[i] > 0) compileDrawElements(l, mode, count[i], type, indices[i]);
+      }))
+    return;
   Context* ctx = drawContext(mode, drawcount);
   if (!ctx) return;
   if (!isIndexType(type)) return ctx->recordError(GL_INVALID_ENUM);

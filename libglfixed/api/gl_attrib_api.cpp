@@ -1,6 +1,7 @@
 // The server attribute stack (GL 2.1 §6.1.14): glPushAttrib, glPopAttrib.
 // Plain functions of their arguments, so that a display list can call them.
 #include "api/api.h"
+#include "api/list_record.h"
 
 using namespace glfixed;
 
@@ -8,6 +9,7 @@ extern "C" {
 
 // Not a flush: Mesa only copies the state (scene attrib_pop_ends_draw).
 GLAPI void APIENTRY glPushAttrib(GLbitfield mask) {
+  if (api::compiled(&glPushAttrib, mask)) return;
   Context* ctx = api::contextForSetter();
   if (ctx && !ctx->attribStack.push(*ctx, mask)) ctx->recordError(GL_STACK_OVERFLOW);
 }
@@ -16,6 +18,7 @@ GLAPI void APIENTRY glPushAttrib(GLbitfield mask) {
 // when nothing changed since the push, and even on underflow (scene
 // attrib_pop_ends_draw).
 GLAPI void APIENTRY glPopAttrib(void) {
+  if (api::compiled(&glPopAttrib)) return;
   Context* ctx = api::contextFlushed();
   if (ctx && !ctx->attribStack.pop(*ctx)) ctx->recordError(GL_STACK_UNDERFLOW);
 }

@@ -6,6 +6,7 @@
 
 #include "api/api.h"
 #include "api/eval_commands.h"
+#include "api/list_record.h"
 #include "pipeline/evaluator.h"
 
 using namespace glfixed;
@@ -74,9 +75,22 @@ bool hasVertexMap(const std::array<bool, kEvalTargets>& enabled) {
   return enabled[GL_MAP1_VERTEX_3 - GL_MAP1_COLOR_4] || enabled[GL_MAP1_VERTEX_4 - GL_MAP1_COLOR_4];
 }
 
+// glEvalCoord and glEvalPoint in a list (§5.4). Between the list's glBegin
+// and glEnd the vertex node ends there, and the rest of that glBegin/glEnd
+// is compiled as commands (Mesa's save module: dlist_fallback).
+template <typename... A>
+bool compiledEvaluation(void (*fn)(A...), A... args) {
+  pipeline::ListCompiler* list = listCompiler(currentContext());
+  if (!list) return false;
+  if (list->insideBeginEnd()) list->fallBackToCommands();
+  return compiledCompound(fn, args...);
+}
+
 }  // namespace
 
 void map1(GLenum target, float u1, float u2, GLint stride, GLint order, std::vector<float> points) {
+  // The points were gathered by the caller: a list keeps them (§5.4).
+  if (compiled(&map1, target, u1, u2, stride, order, points)) return;
   Context* ctx = contextForQuery();
   if (!ctx) return;
   if (!checkMapArguments(*ctx, target, false, u1, u2, stride, order, 0, 1, 0, 1, points)) return;
@@ -85,6 +99,7 @@ void map1(GLenum target, float u1, float u2, GLint stride, GLint order, std::vec
 
 void map2(GLenum target, float u1, float u2, GLint ustride, GLint uorder, float v1, float v2, GLint vstride,
           GLint vorder, std::vector<float> points) {
+  if (compiled(&map2, target, u1, u2, ustride, uorder, v1, v2, vstride, vorder, points)) return;
   Context* ctx = contextForQuery();
   if (!ctx) return;
   if (!checkMapArguments(*ctx, target, true, u1, u2, ustride, uorder, v1, v2, vstride, vorder, points))
@@ -93,6 +108,7 @@ void map2(GLenum target, float u1, float u2, GLint ustride, GLint uorder, float 
 }
 
 void mapGrid1(GLint un, float u1, float u2) {
+  if (compiled(&mapGrid1, un, u1, u2)) return;
   Context* ctx = contextForQuery();
   if (!ctx) return;
   if (un < 1) {
@@ -106,6 +122,7 @@ void mapGrid1(GLint un, float u1, float u2) {
 }
 
 void mapGrid2(GLint un, float u1, float u2, GLint vn, float v1, float v2) {
+  if (compiled(&mapGrid2, un, u1, u2, vn, v1, v2)) return;
   Context* ctx = contextForQuery();
   if (!ctx) return;
   if (un < 1 || vn < 1) {
@@ -123,17 +140,20 @@ void mapGrid2(GLint un, float u1, float u2, GLint vn, float v1, float v2) {
 }
 
 void evalCoord1(float u) {
+  if (compiledEvaluation(&evalCoord1, u)) return;
   Context* ctx = currentContext();
   if (ctx) emit(*ctx, pipeline::evaluate1(ctx->eval, ctx->evalMaps, u));
 }
 
 void evalCoord2(float u, float v) {
+  if (compiledEvaluation(&evalCoord2, u, v)) return;
   Context* ctx = currentContext();
   if (ctx) emit(*ctx, pipeline::evaluate2(ctx->eval, ctx->evalMaps, u, v));
 }
 
 // §5.1: glEvalPoint1(i) is glEvalCoord1(i * du + u1), du = (u2 - u1) / n, in float.
 void evalPoint1(GLint i) {
+  if (compiledEvaluation(&evalPoint1, i)) return;
   Context* ctx = currentContext();
   if (!ctx) return;
   const EvalAttrib& e = ctx->eval;
@@ -142,6 +162,7 @@ void evalPoint1(GLint i) {
 }
 
 void evalPoint2(GLint i, GLint j) {
+  if (compiledEvaluation(&evalPoint2, i, j)) return;
   Context* ctx = currentContext();
   if (!ctx) return;
   const EvalAttrib& e = ctx->eval;
@@ -153,6 +174,7 @@ void evalPoint2(GLint i, GLint j) {
 // glEvalMesh is glBegin/glEvalCoord.../glEnd, the parameter stepped by adding
 // du each time (Mesa's loop, whose sums are the floats that count).
 void evalMesh1(GLenum mode, GLint i1, GLint i2) {
+  if (compiledCompound(&evalMesh1, mode, i1, i2)) return;
   Context* ctx = contextForQuery();
   if (!ctx) return;
   GLenum primitive;
@@ -171,6 +193,7 @@ void evalMesh1(GLenum mode, GLint i1, GLint i2) {
 }
 
 void evalMesh2(GLenum mode, GLint i1, GLint i2, GLint j1, GLint j2) {
+  if (compiledCompound(&evalMesh2, mode, i1, i2, j1, j2)) return;
   Context* ctx = contextForQuery();
   if (!ctx) return;
   if (mode != GL_POINT && mode != GL_LINE && mode != GL_FILL) {

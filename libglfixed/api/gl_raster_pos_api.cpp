@@ -11,6 +11,7 @@
 #include <cmath>
 
 #include "api/api.h"
+#include "api/list_record.h"
 #include "state/lighting_attrib.h"
 #include "vertex/vertex_stage.h"
 
@@ -30,7 +31,9 @@ glm::vec4 transformPoint(const glm::mat4& m, const glm::vec4& p) {
   return q;
 }
 
+// Every form is compiled as this one call (Mesa's save_RasterPos4f).
 void rasterPos(float x, float y, float z, float w) {
+  if (api::compiled(&rasterPos, x, y, z, w)) return;
   Context* ctx = api::contextFlushed();
   if (!ctx) return;
   RasterPosState& rp = ctx->rasterPos;
@@ -174,6 +177,12 @@ extern "C" {
 
 GLAPI void APIENTRY glBitmap(GLsizei width, GLsizei height, GLfloat xorig, GLfloat yorig, GLfloat xmove,
                              GLfloat ymove, const GLubyte* bitmap) {
+  // Compiled without the bitmap: no stage reads its bits yet (rendering
+  // bitmaps is not implemented). When it is, they must be unpacked here, at
+  // compile time (§5.4), as Mesa's save_Bitmap does.
+  if (api::compiled(&glBitmap, width, height, xorig, yorig, xmove, ymove,
+                    static_cast<const GLubyte*>(nullptr)))
+    return;
   Context* ctx = api::contextFlushed();
   if (!ctx) return;
   if (width < 0 || height < 0) return ctx->recordError(GL_INVALID_VALUE);
@@ -186,6 +195,8 @@ GLAPI void APIENTRY glBitmap(GLsizei width, GLsizei height, GLfloat xorig, GLflo
 
 GLAPI void APIENTRY glDrawPixels(GLsizei width, GLsizei height, GLenum format, GLenum type,
                                  const void* pixels) {
+  // Compiled without the pixels, for the same reason as glBitmap.
+  if (api::compiled(&glDrawPixels, width, height, format, type, static_cast<const void*>(nullptr))) return;
   Context* ctx = api::contextFlushed();
   if (!ctx) return;
   if (width < 0 || height < 0) return ctx->recordError(GL_INVALID_VALUE);
@@ -195,6 +206,7 @@ GLAPI void APIENTRY glDrawPixels(GLsizei width, GLsizei height, GLenum format, G
 }
 
 GLAPI void APIENTRY glCopyPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum type) {
+  if (api::compiled(&glCopyPixels, x, y, width, height, type)) return;
   Context* ctx = api::contextFlushed();
   if (!ctx) return;
   if (width < 0 || height < 0) return ctx->recordError(GL_INVALID_VALUE);

@@ -1,11 +1,12 @@
 // Selection and feedback (GL 2.1 §5.2, §5.3): glRenderMode, the name stack,
 // glSelectBuffer, glFeedbackBuffer, glPassThrough. Each command is a plain
-// function of its arguments (display lists will record glInitNames,
-// glLoadName, glPushName, glPopName and glPassThrough; glRenderMode,
-// glSelectBuffer and glFeedbackBuffer are never listed).
+// function of its arguments (display lists record glInitNames, glLoadName,
+// glPushName, glPopName and glPassThrough; glRenderMode, glSelectBuffer and
+// glFeedbackBuffer are never compiled, §5.4).
 #include "api/gl_select_api.h"
 
 #include "api/api.h"
+#include "api/list_record.h"
 
 using namespace glfixed;
 
@@ -123,6 +124,7 @@ GLAPI void APIENTRY glFeedbackBuffer(GLsizei size, GLenum type, GLfloat* buffer)
 }
 
 GLAPI void APIENTRY glPassThrough(GLfloat token) {
+  if (api::compiled(&glPassThrough, token)) return;
   // Outside GL_FEEDBACK: ignored, and Mesa's buffered draw goes on.
   Context* ctx = api::contextForQuery();
   if (!ctx || ctx->renderMode.mode != GL_FEEDBACK) return;
@@ -132,6 +134,7 @@ GLAPI void APIENTRY glPassThrough(GLfloat token) {
 }
 
 GLAPI void APIENTRY glInitNames(void) {
+  if (api::compiled(&glInitNames)) return;
   Context* ctx = api::contextForQuery();
   if (!ctx) return;
   SelectState& s = ctx->renderMode.select;
@@ -144,6 +147,7 @@ GLAPI void APIENTRY glInitNames(void) {
 }
 
 GLAPI void APIENTRY glLoadName(GLuint name) {
+  if (api::compiled(&glLoadName, name)) return;
   Context* ctx = api::contextForQuery();
   if (!ctx || ctx->renderMode.mode != GL_SELECT) return;
   SelectState& s = ctx->renderMode.select;
@@ -154,6 +158,7 @@ GLAPI void APIENTRY glLoadName(GLuint name) {
 }
 
 GLAPI void APIENTRY glPushName(GLuint name) {
+  if (api::compiled(&glPushName, name)) return;
   Context* ctx = nameStackContext();
   if (!ctx) return;
   SelectState& s = ctx->renderMode.select;
@@ -162,6 +167,7 @@ GLAPI void APIENTRY glPushName(GLuint name) {
 }
 
 GLAPI void APIENTRY glPopName(void) {
+  if (api::compiled(&glPopName)) return;
   Context* ctx = nameStackContext();
   if (!ctx) return;
   SelectState& s = ctx->renderMode.select;

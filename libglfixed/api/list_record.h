@@ -136,6 +136,31 @@ bool compiledAttribute(R (*fn)(P...), const A&... args) {
   return compiled(fn, args...);
 }
 
+// A command that issues other commands (glEvalMesh issues glBegin,
+// glEvalCoord and glEnd): as compiled(), but in GL_COMPILE_AND_EXECUTE it
+// runs here, unrecorded, so that the commands it issues are not compiled
+// too. True whenever a list is being compiled (the caller returns).
+template <typename R, typename... P, typename... A>
+bool compiledCompound(R (*fn)(P...), const A&... args);
+
+// A draw from the vertex arrays (glDrawArrays, glDrawElements, ...): in a
+// list it is the glBegin/glEnd it stands for, `intoNode(ListCompiler&)`
+// reading the elements now (§5.4: array contents are captured at compile
+// time) and feeding them to the vertex node, as Mesa's save_DrawArrays
+// loops over _mesa_array_element. Not allowed inside the list's
+// glBegin/glEnd. True whenever a list is being compiled.
+template <typename Node>
+bool compiledDraw(Node&& intoNode) {
+  Context* ctx = currentContext();
+  pipeline::ListCompiler* list = listCompiler(ctx);
+  if (!list) return false;
+  if (list->insideBeginEnd())
+    list->recordError(*ctx, GL_INVALID_OPERATION);
+  else
+    intoNode(*list);
+  return true;
+}
+
 // Runs a command now without recording it (for the few that Mesa executes
 // before it compiles them).
 template <typename R, typename... P, typename... A>
@@ -145,6 +170,14 @@ void runUnrecorded(R (*fn)(P...), const A&... args) {
   ++ctx->displayLists.executing;
   fn(args...);
   --ctx->displayLists.executing;
+}
+
+template <typename R, typename... P, typename... A>
+bool compiledCompound(R (*fn)(P...), const A&... args) {
+  pipeline::ListCompiler* list = listCompiler(currentContext());
+  if (!list) return false;
+  if (!compiled(fn, args...)) runUnrecorded(fn, args...);
+  return true;
 }
 
 }  // namespace glfixed::api

@@ -125,7 +125,8 @@ void ListCompiler::recordError(Context& ctx, GLenum error) {
   if (executes()) ctx.recordError(error);
 }
 
-void ListCompiler::begin(GLenum mode) {
+void ListCompiler::begin(GLenum mode, bool fromArrays) {
+  lastBeginFromArrays_ = fromArrays;
   VertexNode& n = *node_;
   ListPrimitive p;
   p.mode = mode;
@@ -271,6 +272,7 @@ void ListCompiler::endNode() {
   grownChain_.clear();
   if (node->primitives.empty() && node->attributeCalls.empty() && !node->feedsOpenPrimitive) return;
   node_ = std::make_shared<VertexNode>();
+  node->updatesCurrent = !lastBeginFromArrays_;
   node->primitives = mergeLikeImmediateMode(node->primitives);
   for (IndexedDraw& d : mergeIntoDraws(node->primitives)) {
     VertexBatch b;
@@ -406,7 +408,7 @@ void replayVertexNode(Context& ctx, VertexNode& node) {
     ctx.vbo = Context::VboFormat();
     // The last vertex's attributes become current (Mesa's current_data).
     const VertexBatch& v = node.vertices;
-    if (v.size() > 0) {
+    if (v.size() > 0 && node.updatesCurrent) {
       if (node.hasNormal) ctx.current.normal = v.normal.back();
       if (node.hasColor) {
         ctx.current.color = v.color.back();

@@ -80,6 +80,10 @@ struct VertexNode {
   // Other current-attribute calls between glBegin and glEnd (texture
   // coordinates, ...): no stage reads them per vertex yet; run after the node.
   std::vector<ListCommand> attributeCalls;
+  // A replay makes the last vertex's colour and normal current, unless the
+  // node's last primitive came from an array draw (Mesa's no_current_update:
+  // save_DrawArrays begins its primitive with it).
+  bool updatesCurrent = true;
 };
 
 struct DisplayList {
@@ -103,7 +107,8 @@ class ListCompiler {
   void recordError(Context& ctx, GLenum error);
 
   // Vertex data inside the list's glBegin/glEnd.
-  void begin(GLenum mode);
+  // `fromArrays`: the glBegin/glEnd of a glDrawArrays or glDrawElements.
+  void begin(GLenum mode, bool fromArrays = false);
   void end();
   void vertex(const glm::vec4& position);
   void color(const glm::vec4& c);
@@ -137,6 +142,7 @@ class ListCompiler {
   std::shared_ptr<DisplayList> list_;
   std::shared_ptr<VertexNode> node_ = std::make_shared<VertexNode>();
   bool insideBeginEnd_ = false;
+  bool lastBeginFromArrays_ = false;
   glm::vec4 color_{1, 1, 1, 1};
   glm::vec3 normal_{0, 0, 1};
   // The nodes a format growth ended inside the glBegin/glEnd that goes on in

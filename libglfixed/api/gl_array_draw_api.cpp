@@ -302,10 +302,10 @@ void compileDrawElements(pipeline::ListCompiler& list, GLenum mode, GLsizei coun
   if (!resolveForList(list, src)) return;
   if (const BufferObject* b = ctx.buffers.find(ctx.vertexArray.elementArrayBufferBinding); b && b->mapped)
     return list.recordError(ctx, GL_INVALID_OPERATION);
-  std::vector<uint32_t> elements;
-  readIndices(ctx, count, type, indices, elements);
+  pipeline::IndexList elements;  // read where they lie, as a draw reads them
+  if (!indexList(ctx, count, type, indices, elements)) return;
   list.begin(mode, true);
-  for (uint32_t e : elements) arrayElement(src, e);
+  for (uint32_t i = 0; i < elements.count; ++i) arrayElement(src, elements.at(i));
   list.end();
 }
 

@@ -163,6 +163,25 @@ static void L_LightModel(void)
 }
 
 /* ---- primitives --------------------------------------------------------- */
+static const char *fz_draw_list;   /* GLFX_FUZZ_DRAWS: only these primitives */
+
+/* Whether primitive i is drawn: inside GLFX_FUZZ_DRAW_LO..HI and, when
+ * GLFX_FUZZ_DRAWS="a,b,..." is given, one of those. */
+static int fz_draw_wanted(int i)
+{
+    const char *s = fz_draw_list;
+    if (i < fz_draw_lo || i > fz_draw_hi) return 0;
+    if (!s || !*s) return 1;
+    while (*s) {
+        char *end;
+        long v = strtol(s, &end, 10);
+        if (end == s) break;
+        if (v == i) return 1;
+        s = *end ? end + 1 : end;
+    }
+    return 0;
+}
+
 static float fz_cx, fz_cy, fz_cz;   /* random walk centre */
 
 static void vertex(void)
@@ -198,7 +217,7 @@ static void draw_prim(void)
     GLenum mode = prims[fz_int(6)];
     int n, i, repeat = fz_chance(25) ? 1 + fz_int(3) : 1, r;
     for (r = 0; r < repeat; r++) {
-        fz_emit = fz_draw_index >= fz_draw_lo && fz_draw_index <= fz_draw_hi;
+        fz_emit = fz_draw_wanted(fz_draw_index);
         fz_draw_index++;
         n = fz_int(10);
         if (mode == GL_TRIANGLES || mode == GL_QUADS) n = fz_int(4) * (mode == GL_TRIANGLES ? 3 : 4) + (fz_chance(20) ? fz_int(3) : 0);
@@ -363,6 +382,7 @@ static int fuzz_begin(int argc, char **argv, unsigned default_seed)
     fz_log = env_int("GLFX_FUZZ_LOG", 0);
     fz_draw_lo = env_int("GLFX_FUZZ_DRAW_LO", 0);
     fz_draw_hi = env_int("GLFX_FUZZ_DRAW_HI", 1 << 30);
+    fz_draw_list = getenv("GLFX_FUZZ_DRAWS");
     fz_nolight = env_int("GLFX_FUZZ_NOLIGHT", 0);
     fz_color3f = env_int("GLFX_FUZZ_COLOR3F", 0);
     fz_state = seed * 2654435761ull + 12345;

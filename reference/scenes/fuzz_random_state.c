@@ -21,6 +21,7 @@
  *                          the others still make their glColor / glNormal /
  *                          glMaterial calls (outside glBegin/glEnd) so the
  *                          current state stays the same.
+ *   GLFX_FUZZ_DRAWS=a,b,.. only these primitives are drawn (within LO..HI).
  *   GLFX_FUZZ_NOLIGHT=1    never enable lighting
  *   GLFX_FUZZ_COLOR3F=1    use glColor3f (else glColor3d, which Mesa runs
  *                          as glColor4f(.., 1)).  glColor3f/3fv are Mesa's

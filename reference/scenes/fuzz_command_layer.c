@@ -30,6 +30,10 @@
  *     by the outer glPopAttrib: an inner mask holds the outer one's groups;
  *   - glPopAttrib does not track the colour material again: a glColor follows
  *     every glPopAttrib;
+ *   - glPopAttrib does not undo a glMaterial made since the glPushAttrib
+ *     (GL_LIGHTING_BIT or GL_ALL_ATTRIB_BITS): while a push with
+ *     GL_LIGHTING_BIT is open, glMaterial draws its random numbers but is
+ *     not called (found by this scene, seed 34);
  *   - the current colour and normal are undefined after an array draw
  *     (GL 2.1 §2.8) and stale after a map first made them vertex data: a
  *     glColor and a glNormal follow every array and evaluator draw;
@@ -458,6 +462,7 @@ static void attrib_op(void)
         fz_attrib_mask[fz_attrib_depth] = mask;
         fz_attrib_mode[fz_attrib_depth] = fz_mode;
         fz_attrib_depth++;
+        if (mask & GL_LIGHTING_BIT) fz_no_material = 1;
         LOG("glPushAttrib(0x%X);", mask);
         glPushAttrib(mask);
     } else if (fz_attrib_depth > 0) {
@@ -465,6 +470,8 @@ static void attrib_op(void)
         LOG("glPopAttrib();");
         glPopAttrib();
         if (fz_attrib_mask[fz_attrib_depth] & GL_TRANSFORM_BIT) fz_mode = fz_attrib_mode[fz_attrib_depth];
+        /* masks nest as supersets: the outer ones hold no more groups */
+        fz_no_material = fz_attrib_depth > 0 && (fz_attrib_mask[fz_attrib_depth - 1] & GL_LIGHTING_BIT);
         L_Color(); /* Mesa defect, see top */
     }
 }

@@ -24,6 +24,7 @@ static int fz_color3f;         /* GLFX_FUZZ_COLOR3F: use glColor3f (see top) */
 static int fz_two_side;
 static int fz_depth[2];        /* push depth: modelview, projection */
 static int fz_mode;            /* 0 modelview, 1 projection */
+static int fz_no_material;     /* set by fuzz_command_layer: glMaterial draws its random numbers but is not called (0 here) */
 
 static unsigned fz_rand(void)
 {
@@ -101,12 +102,12 @@ static void L_Material(int inside)
     if (inside) face = GL_FRONT_AND_BACK;   /* known Mesa bug, see top */
     if (pname == GL_SHININESS) {
         v[0] = fz_f(0, 128);
-        L_fv("glMaterialfv", glMaterialfv, face, pname, v, 1);
+        if (!fz_no_material) L_fv("glMaterialfv", glMaterialfv, face, pname, v, 1);
         return;
     }
     rand_color4(v, pname == GL_EMISSION ? 0.0f : 0.0f, pname == GL_EMISSION ? 0.4f : 1.0f);
     if (fz_chance(5)) v[0] = -0.3f;
-    L_fv("glMaterialfv", glMaterialfv, face, pname, v, 4);
+    if (!fz_no_material) L_fv("glMaterialfv", glMaterialfv, face, pname, v, 4);
 }
 
 static void L_Light(void)

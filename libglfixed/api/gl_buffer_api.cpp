@@ -135,7 +135,7 @@ GLAPI void APIENTRY glBufferData(GLenum target, GLsizeiptr size, const void* dat
   b->access = GL_READ_WRITE;
   b->usage = usage;
   try {
-    std::vector<uint8_t> store(static_cast<size_t>(size));
+    DataStore store(static_cast<size_t>(size));  // zeros (StoreAllocator)
     if (data && size > 0) std::memcpy(store.data(), data, static_cast<size_t>(size));
     b->data.swap(store);
   } catch (const std::bad_alloc&) {

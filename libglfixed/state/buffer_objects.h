@@ -6,15 +6,50 @@
 #include <GL/gl.h>
 
 #include <cstdint>
+#include <cstdlib>
 #include <map>
 #include <memory>
+#include <new>
 #include <set>
+#include <utility>
 #include <vector>
 
 namespace glfixed {
 
+// The data store's allocator. calloc, not operator new: a store too large to
+// allocate fails with null, which glBufferData turns into GL_OUT_OF_MEMORY,
+// where a sanitizer's operator new ends the program; and a large store's
+// zeroed pages are not touched until written (Mesa's are not either).
+template <typename T>
+struct StoreAllocator {
+  using value_type = T;
+  StoreAllocator() = default;
+  template <typename U>
+  StoreAllocator(const StoreAllocator<U>&) {}
+  T* allocate(size_t n) {
+    void* p = std::calloc(n, sizeof(T));
+    if (!p) throw std::bad_alloc();
+    return static_cast<T*>(p);
+  }
+  void deallocate(T* p, size_t) { std::free(p); }
+  // A new element is left as calloc made it (zero), not written again.
+  template <typename U>
+  void construct(U* p) noexcept {
+    ::new (static_cast<void*>(p)) U;
+  }
+  template <typename U, typename... Args>
+  void construct(U* p, Args&&... args) {
+    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+  }
+  template <typename U>
+  bool operator==(const StoreAllocator<U>&) const { return true; }
+  template <typename U>
+  bool operator!=(const StoreAllocator<U>&) const { return false; }
+};
+using DataStore = std::vector<uint8_t, StoreAllocator<uint8_t>>;
+
 struct BufferObject {
-  std::vector<uint8_t> data;  // the data store; its size is GL_BUFFER_SIZE
+  DataStore data;  // the data store; its size is GL_BUFFER_SIZE
   GLenum usage = GL_STATIC_DRAW;
   GLenum access = GL_READ_WRITE;
   bool mapped = false;

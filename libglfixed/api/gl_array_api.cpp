@@ -159,17 +159,20 @@ GLAPI void APIENTRY glInterleavedArrays(GLenum format, GLsizei stride, const voi
   const GLsizei pn = pc + colorBytes;
   const GLsizei pv = pn + (f->normal ? 3 * floatBytes : 0);
   const GLsizei s = stride != 0 ? stride : pv + f->vertexSize * floatBytes;
-  const char* base = static_cast<const char*>(pointer);
+  // Offsets added as integers: with a buffer bound the pointer is an offset,
+  // often 0, and arithmetic on a null pointer is undefined.
+  const uintptr_t base = reinterpret_cast<uintptr_t>(pointer);
+  auto at = [base](GLsizei offset) { return reinterpret_cast<const void*>(base + static_cast<uintptr_t>(offset)); };
   VertexArrayAttrib& a = ctx->vertexArray;
   const GLuint binding = a.arrayBufferBinding;
   a.edgeFlag.enabled = false;
   a.index.enabled = false;
   a.secondaryColor.enabled = false;
   a.fogCoord.enabled = false;
-  storeArray(a.activeTexCoord(), f->texture, f->textureSize, GL_FLOAT, s, base, binding);
-  storeArray(a.color, f->color, f->colorSize, f->colorType, s, base + pc, binding);
-  storeArray(a.normal, f->normal, 3, GL_FLOAT, s, base + pn, binding);
-  storeArray(a.vertex, true, f->vertexSize, GL_FLOAT, s, base + pv, binding);
+  storeArray(a.activeTexCoord(), f->texture, f->textureSize, GL_FLOAT, s, pointer, binding);
+  storeArray(a.color, f->color, f->colorSize, f->colorType, s, at(pc), binding);
+  storeArray(a.normal, f->normal, 3, GL_FLOAT, s, at(pn), binding);
+  storeArray(a.vertex, true, f->vertexSize, GL_FLOAT, s, at(pv), binding);
 }
 
 // GL 2.1 §6.1.14: the client attribute stack, one copy per group.

@@ -326,6 +326,10 @@ bool lookUp(GLenum pname, const void* params, StateValue& value) {
 }
 
 GLint toInteger(double v, Kind kind) {
+  // NaN (a NaN colour, fog end or grid domain is stored as given) would be
+  // an undefined conversion: Mesa's answers, its (GLint) cast of the scaled
+  // colour (INT_MIN) and its lroundf truncated to 32 bits (0).
+  if (std::isnan(v)) return kind == Kind::kNormalized ? -2147483647 - 1 : 0;
   if (kind == Kind::kNormalized) {
     // §6.1.2: 1.0 to the most positive integer, -1.0 to the most negative.
     double scaled = v * 2147483647.0;

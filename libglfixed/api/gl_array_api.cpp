@@ -162,7 +162,9 @@ GLAPI void APIENTRY glInterleavedArrays(GLenum format, GLsizei stride, const voi
   // Offsets added as integers: with a buffer bound the pointer is an offset,
   // often 0, and arithmetic on a null pointer is undefined.
   const uintptr_t base = reinterpret_cast<uintptr_t>(pointer);
-  auto at = [base](GLsizei offset) { return reinterpret_cast<const void*>(base + static_cast<uintptr_t>(offset)); };
+  auto at = [base](GLsizei offset) {
+    return reinterpret_cast<const void*>(base + static_cast<uintptr_t>(offset));
+  };
   VertexArrayAttrib& a = ctx->vertexArray;
   const GLuint binding = a.arrayBufferBinding;
   a.edgeFlag.enabled = false;

@@ -42,9 +42,13 @@ struct StoreAllocator {
     ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
   }
   template <typename U>
-  bool operator==(const StoreAllocator<U>&) const { return true; }
+  bool operator==(const StoreAllocator<U>&) const {
+    return true;
+  }
   template <typename U>
-  bool operator!=(const StoreAllocator<U>&) const { return false; }
+  bool operator!=(const StoreAllocator<U>&) const {
+    return false;
+  }
 };
 using DataStore = std::vector<uint8_t, StoreAllocator<uint8_t>>;
 

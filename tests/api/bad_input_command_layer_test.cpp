@@ -115,7 +115,8 @@ TEST_F(BadInputCommandLayerTest, SubDataWhoseEndOverflowsIsInvalidValue) {
 }
 
 TEST_F(BadInputCommandLayerTest, NullDataPointersAreIgnored) {
-  GLFX_SKIP_ON_MESA("Mesa copies into a null glGetBufferSubData pointer and reads a null glDeleteBuffers list");
+  GLFX_SKIP_ON_MESA(
+      "Mesa copies into a null glGetBufferSubData pointer and reads a null glDeleteBuffers list");
   MakeBuffer(GL_ARRAY_BUFFER, 16, nullptr);
   glGetBufferSubData(GL_ARRAY_BUFFER, 0, 16, nullptr);
   glDeleteBuffers(1, nullptr);
@@ -325,13 +326,15 @@ TEST_F(BadInputCommandLayerTest, ElementDrawsPastTheEndOfTheirBuffersStayInside)
 // write no pixel outside the window (the fixture's buffer is exactly the
 // window: the sanitizer build would see a write past it).
 TEST_F(BadInputCommandLayerTest, NonFiniteArrayValuesDrawWithoutError) {
-  const GLfloat v[] = {kNaN, 0, 1, 1, 0, kNaN, kInf, -kInf, 0, 1, -kInf, kInf, 1e38f, 1e38f, -1e38f, 1e38f, 0, 0};
+  const GLfloat v[] = {kNaN, 0,     1,    1,     0,     kNaN,   kInf,  -kInf, 0,
+                       1,    -kInf, kInf, 1e38f, 1e38f, -1e38f, 1e38f, 0,     0};
   const GLfloat c[] = {kNaN, 1, 1, 1, kInf, 0, 0, 1, -kInf, 1, kNaN, 1, 1, 1, 1, 1, 0, 0, 0, 0, 1, 1, 1, 1};
   glVertexPointer(3, GL_FLOAT, 0, v);
   glColorPointer(4, GL_FLOAT, 0, c);
   glEnableClientState(GL_VERTEX_ARRAY);
   glEnableClientState(GL_COLOR_ARRAY);
-  for (GLenum mode : {GL_POINTS, GL_LINES, GL_TRIANGLES, GL_TRIANGLE_STRIP, GL_TRIANGLE_FAN, GL_QUADS, GL_POLYGON})
+  for (GLenum mode :
+       {GL_POINTS, GL_LINES, GL_TRIANGLES, GL_TRIANGLE_STRIP, GL_TRIANGLE_FAN, GL_QUADS, GL_POLYGON})
     glDrawArrays(mode, 0, 6);
   const GLubyte indices[6] = {5, 4, 3, 2, 1, 0};
   glDrawElements(GL_TRIANGLES, 6, GL_UNSIGNED_BYTE, indices);

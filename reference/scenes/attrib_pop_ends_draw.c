@@ -5,17 +5,7 @@
  * buffered vertices first whatever it restores (even an unchanged group, even
  * on underflow); glPushAttrib does not. One row per case. */
 #include "scene.h"
-
-static void quad(float x, float y, float s)
-{
-    static const float c[4][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 0.2f}};
-    glBegin(GL_QUADS);
-    glColor3fv(c[0]); glVertex2f(x, y);
-    glColor3fv(c[1]); glVertex2f(x + s, y);
-    glColor3fv(c[2]); glVertex2f(x + s, y + s);
-    glColor3fv(c[3]); glVertex2f(x, y + s);
-    glEnd();
-}
+#include "smooth_quad.h"
 
 static const GLbitfield groups[] = {
     GL_DEPTH_BUFFER_BIT, GL_ALL_ATTRIB_BITS, GL_LIGHTING_BIT, GL_CURRENT_BIT, GL_ENABLE_BIT,

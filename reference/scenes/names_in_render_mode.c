@@ -9,20 +9,10 @@
 #include <stddef.h>
 
 #include "scene.h"
+#include "smooth_quad.h"
 
 static GLuint select_buffer[64];
 static GLfloat feedback_buffer[64];
-
-static void quad(float x, float y, float s)
-{
-    static const float c[4][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 0.2f}};
-    glBegin(GL_QUADS);
-    glColor3fv(c[0]); glVertex2f(x, y);
-    glColor3fv(c[1]); glVertex2f(x + s, y);
-    glColor3fv(c[2]); glVertex2f(x + s, y + s);
-    glColor3fv(c[3]); glVertex2f(x, y + s);
-    glEnd();
-}
 
 static void command(int which)
 {

@@ -3,17 +3,7 @@
  * one draw and the quad clipped at the right edge decides how every quad of
  * the draw is split. One row per setter; each row starts with a clipped quad. */
 #include "scene.h"
-
-static void quad(float x, float y, float s)
-{
-    static const float c[4][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 0.2f}};
-    glBegin(GL_QUADS);
-    glColor3fv(c[0]); glVertex2f(x, y);
-    glColor3fv(c[1]); glVertex2f(x + s, y);
-    glColor3fv(c[2]); glVertex2f(x + s, y + s);
-    glColor3fv(c[3]); glVertex2f(x, y + s);
-    glEnd();
-}
+#include "smooth_quad.h"
 
 static void redundant(int which)
 {

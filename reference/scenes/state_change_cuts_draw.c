@@ -3,17 +3,7 @@
  * change decides whether the quad clipped at the right edge shares a draw
  * with (and so decides the split of) the quads after it. One row per setter. */
 #include "scene.h"
-
-static void quad(float x, float y, float s)
-{
-    static const float c[4][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 0.2f}};
-    glBegin(GL_QUADS);
-    glColor3fv(c[0]); glVertex2f(x, y);
-    glColor3fv(c[1]); glVertex2f(x + s, y);
-    glColor3fv(c[2]); glVertex2f(x + s, y + s);
-    glColor3fv(c[3]); glVertex2f(x, y + s);
-    glEnd();
-}
+#include "smooth_quad.h"
 
 static void change_and_back(int which)
 {

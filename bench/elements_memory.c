@@ -2,18 +2,12 @@
  * 32-bit indices from client memory into a grid of lit vertices, 256x256,
  * depth tested). Prints the peak resident set size (getrusage ru_maxrss)
  * before and after the draw, and what the draw added. Built against Mesa's
- * headers; run on Mesa and on the drop-in by bench/run_memory_bench.sh. */
+ * headers; run on Mesa and on the drop-in by bench/run_memory.sh. */
 #include <GL/gl.h>
 #include <GL/osmesa.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include <sys/resource.h>
-
-static long peak_kib(void) {
-    struct rusage u;
-    getrusage(RUSAGE_SELF, &u);
-    return u.ru_maxrss;
-}
+#include "peak_rss.h"
 
 int main(int argc, char **argv) {
     const long n = argc > 1 ? atol(argv[1]) : 10000000L;
@@ -50,10 +44,10 @@ int main(int argc, char **argv) {
     glNormalPointer(GL_FLOAT, 0, nrm);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     glFinish();
-    const long before = peak_kib();
+    const long before = peak_rss_kib();
     glDrawElements(GL_TRIANGLES, (GLsizei)n, GL_UNSIGNED_INT, idx);
     glFinish();
-    const long after = peak_kib();
+    const long after = peak_rss_kib();
     printf("%ld indices: peak RSS %.1f MiB before the draw, %.1f MiB after; the draw added %.1f MiB\n", n,
            before / 1024.0, after / 1024.0, (after - before) / 1024.0);
     OSMesaDestroyContext(ctx);

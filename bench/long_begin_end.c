@@ -7,13 +7,7 @@
 #include <GL/osmesa.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include <sys/resource.h>
-
-static long peak_kb(void) {
-    struct rusage u;
-    getrusage(RUSAGE_SELF, &u);
-    return u.ru_maxrss;
-}
+#include "peak_rss.h"
 
 int main(int argc, char **argv) {
     const long n = argc > 1 ? atol(argv[1]) : 10000000L;
@@ -27,7 +21,7 @@ int main(int argc, char **argv) {
     glEnable(GL_LIGHTING);
     glEnable(GL_LIGHT0);
     glFinish();
-    const long before = peak_kb();
+    const long before = peak_rss_kib();
     glBegin(GL_TRIANGLES);
     for (long i = 0; i < n / 3; i++) {
         /* a 2-pixel triangle somewhere on a 64x64 grid of cells */
@@ -38,7 +32,7 @@ int main(int argc, char **argv) {
     }
     glEnd();
     glFinish();
-    printf("%ld vertices: peak RSS %ld kB before glBegin, %ld kB after glEnd\n", n, before, peak_kb());
+    printf("%ld vertices: peak RSS %ld kB before glBegin, %ld kB after glEnd\n", n, before, peak_rss_kib());
     OSMesaDestroyContext(ctx);
     free(buf);
     return 0;

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "primitive/assemble.h"
+#include "primitive/batch_context.h"
 #include "primitive/clip.h"
 #include "primitive/cull.h"
 #include "primitive/primitive.h"
@@ -21,25 +22,6 @@
 namespace glfixed::primitive {
 
 namespace {
-
-// Attribute layout inside ClipVertex::attr.
-constexpr int kFrontAttribs = 0;  // primary RGBA, secondary RGBA
-constexpr int kBackAttribs = 8;
-
-struct BatchContext {
-  const PrimitiveState& state;
-  Framebuffer& fb;
-  ViewportTransform viewport;
-  FaceRule face;
-  bool pipeline;  // Mesa runs its draw pipeline for the current segment (assemble.h)
-  int varyingCount;
-  bool twoSided;
-  float constantColours[8];    // primary, secondary of vertex 0 (see PrimitiveState::constantPrimary)
-  raster::RasterState raster;  // state.raster with flatGroups set for this draw
-  // llvmpipe's "uses constant interpolation": GL_FLAT with a colour the
-  // fragment shader really reads as an input. It changes quad splits.
-  bool flatInputs;
-};
 
 // llvmpipe's triangle setup: snap, cull and face by the fixed-point area,
 // pick front or back colours, put a clockwise triangle in counter-clockwise
@@ -84,6 +66,8 @@ void setupTriangle(const BatchContext& b, const ClipVertex& v0, const ClipVertex
   }
 }
 
+}  // namespace
+
 // A triangle leaving the clipper: the draw module's cull stage (pipeline
 // only), then llvmpipe's setup.
 void emitTriangle(const BatchContext& b, const ClipVertex& v0, const ClipVertex& v1, const ClipVertex& v2,
@@ -91,6 +75,8 @@ void emitTriangle(const BatchContext& b, const ClipVertex& v0, const ClipVertex&
   if (b.pipeline && drawModuleCulls(b.face, v0.window, v1.window, v2.window)) return;
   setupTriangle(b, v0, v1, v2, provoking);
 }
+
+namespace {
 
 // The clipped polygon as a fan around its first vertex, which takes the
 // provoking slot (draw_pipe_clip.c, emit_poly).
@@ -166,7 +152,7 @@ void drawSegment(BatchContext& b, GLenum mode, const Segment& seg, bool indexed,
   assembleTriangles(mode, seg.count, state.firstVertexConvention, b.flatInputs, path, triangles);
 
   const int provokingSlot = primitive::provokingSlot(state.firstVertexConvention);
-  const int attribCount = kBackAttribs + 8;
+  const int attribCount = kClipAttribCount;
   static thread_local ClippedPolygon polygon;
   for (const Triangle& local : triangles) {
     const uint32_t t[3] = {global(local[0]), global(local[1]), global(local[2])};
@@ -188,16 +174,10 @@ void drawSegment(BatchContext& b, GLenum mode, const Segment& seg, bool indexed,
 
 void drawPrimitives(const PrimitiveState& state, const ShadedVertices& vertices, Framebuffer& fb) {
   const uint32_t n = trimVertexCount(state.mode, static_cast<uint32_t>(vertices.size()));
-  if (n < 3 || !fb.bound()) return;
-  switch (state.mode) {
-    case GL_TRIANGLES:
-    case GL_TRIANGLE_STRIP:
-    case GL_TRIANGLE_FAN:
-    case GL_QUADS:
-    case GL_QUAD_STRIP:
-    case GL_POLYGON: break;
-    default: return;  // points and lines: not yet
-  }
+  if (n == 0 || !fb.bound()) return;
+  const bool points = state.mode == GL_POINTS;
+  const bool lines = state.mode == GL_LINES || state.mode == GL_LINE_STRIP || state.mode == GL_LINE_LOOP;
+  if (!points && !lines && n < 3) return;
 
   BatchContext b{state,
                  fb,
@@ -210,7 +190,8 @@ void drawPrimitives(const PrimitiveState& state, const ShadedVertices& vertices,
                  {},
                  {},
                  false};
-  if (b.face.cullFace && b.face.cullFaceMode == GL_FRONT_AND_BACK) return;
+  // Culling both faces drops every polygon, never a line or a point (§3.5.1).
+  if (!points && !lines && b.face.cullFace && b.face.cullFaceMode == GL_FRONT_AND_BACK) return;
   for (int k = 0; k < 4; ++k) {
     b.constantColours[k] = vertices.primary[kFront][0][k];
     b.constantColours[4 + k] = vertices.hasSecondary ? vertices.secondary[kFront][0][k] : 0.0f;
@@ -227,6 +208,8 @@ void drawPrimitives(const PrimitiveState& state, const ShadedVertices& vertices,
   static thread_local std::vector<uint32_t> masks;
   static thread_local std::vector<Segment> segments;
   loadVertices(vertices, n, b.viewport, clipVertices, masks);
+  if (points) return drawPointBatch(b, n, clipVertices, masks);
+  if (lines) return drawLineBatch(b, state.mode, n, clipVertices, masks);
 
   using Submission = PrimitiveState::Submission;
   const bool indexed =

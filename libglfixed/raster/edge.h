@@ -38,12 +38,16 @@ struct Edge {
   int64_t dcdx = 0, dcdy = 0;  // y_i - y_{i+1}, x_i - x_{i+1}
   int64_t c = 0;               // E at pixel (0, 0), fill-rule bias included
 
-  static Edge make(const FixedTriangle& t, int i) {
-    int j = (i + 1) % 3;
+  static Edge make(const FixedTriangle& t, int i) { return make(t.x, t.y, 3, i); }
+  // The edge from vertex i to vertex i+1 (mod n) of a convex polygon of n
+  // snapped vertices (a line's or a point's quadrilateral has 4), with the
+  // same fill rule.
+  static Edge make(const int32_t* x, const int32_t* y, int n, int i) {
+    int j = (i + 1) % n;
     Edge e;
-    e.dcdx = int64_t(t.y[i]) - t.y[j];
-    e.dcdy = int64_t(t.x[i]) - t.x[j];
-    e.c = e.dcdx * t.x[i] - e.dcdy * t.y[i];
+    e.dcdx = int64_t(y[i]) - y[j];
+    e.dcdy = int64_t(x[i]) - x[j];
+    e.c = e.dcdx * x[i] - e.dcdy * y[i];
     if (e.dcdx < 0 || (e.dcdx == 0 && e.dcdy < 0)) e.c += 1;
     return e;
   }

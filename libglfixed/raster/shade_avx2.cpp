@@ -10,7 +10,7 @@
 #include <cstring>
 
 #include "raster/depth.h"
-#include "raster/triangle_setup.h"
+#include "raster/primitive_setup.h"
 
 namespace glfixed::raster {
 
@@ -63,7 +63,7 @@ GLFIXED_AVX2 inline __m256i colorToUnormX8(__m256 c) {
 
 }  // namespace
 
-GLFIXED_AVX2 void shadeTriangleAvx2(const TriangleSetup& t, const ShadeTarget& s) {
+GLFIXED_AVX2 void shadePrimitiveAvx2(const PrimitiveSetup& t, const ShadeTarget& s) {
   // Locals, not reads through `s` and `t`: byte stores may alias anything, so
   // the compiler would reload every field after each store.
   const int height = s.height;
@@ -102,11 +102,13 @@ GLFIXED_AVX2 void shadeTriangleAvx2(const TriangleSetup& t, const ShadeTarget& s
     for (int k = 0; k < 4; ++k) flatBytes[k] = _mm256_set1_epi32(colorToUnorm8(c[k]));
   }
 
-  EdgeSpanStepper edges[3] = {{t.edge[0], t.y0}, {t.edge[1], t.y0}, {t.edge[2], t.y0}};
+  const int edgeCount = t.edgeCount;
+  EdgeSpanStepper edges[kMaxEdges];
+  for (int i = 0; i < edgeCount; ++i) edges[i] = EdgeSpanStepper(t.edge[i], t.y0);
   for (int py = t.y0; py <= t.y1; ++py) {
     int64_t spanLo = t.x0, spanHi = t.x1;
-    for (const EdgeSpanStepper& e : edges) e.clip(spanLo, spanHi);
-    for (EdgeSpanStepper& e : edges) e.nextRow();
+    for (int i = 0; i < edgeCount; ++i) edges[i].clip(spanLo, spanHi);
+    for (int i = 0; i < edgeCount; ++i) edges[i].nextRow();
     if (spanLo > spanHi) continue;
     const int lo = static_cast<int>(spanLo), hi = static_cast<int>(spanHi);
     const int glY = height - 1 - py;

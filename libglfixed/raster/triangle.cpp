@@ -11,8 +11,8 @@
 #include "raster/depth.h"
 #include "raster/edge.h"
 #include "raster/interpolate.h"
+#include "raster/primitive_setup.h"
 #include "raster/raster.h"
-#include "raster/triangle_setup.h"
 
 namespace glfixed::raster {
 
@@ -29,7 +29,7 @@ int snapTriangle(const WindowVertex& v0, const WindowVertex& v1, const WindowVer
 namespace {
 
 // The reference for the AVX2 shader: one fragment at a time.
-void shadeSpanScalar(const TriangleSetup& t, const ShadeTarget& s, int py, int lo, int hi) {
+void shadeSpanScalar(const PrimitiveSetup& t, const ShadeTarget& s, int py, int lo, int hi) {
   const int glY = s.height - 1 - py;
   const float fpy = static_cast<float>(py);
   uint8_t* colorRow = s.color->pixel(0, glY);
@@ -74,7 +74,7 @@ void shadeSpanScalar(const TriangleSetup& t, const ShadeTarget& s, int py, int l
 
 }  // namespace
 
-void shadeTriangleScalar(const TriangleSetup& t, const ShadeTarget& s) {
+void shadePrimitiveScalar(const PrimitiveSetup& t, const ShadeTarget& s) {
   forEachSpan(t, [&](int py, int lo, int hi) { shadeSpanScalar(t, s, py, lo, hi); });
 }
 
@@ -82,7 +82,7 @@ namespace {
 const bool kUseAvx2 = haveAvx2Fma();
 }  // namespace
 
-ShadeTarget makeShadeTarget(const RasterState& state, Framebuffer& fb, const TriangleSetup& t) {
+ShadeTarget makeShadeTarget(const RasterState& state, Framebuffer& fb, const PrimitiveSetup& t) {
   ShadeTarget s;
   s.height = fb.height();
   s.color = &fb.color;
@@ -107,7 +107,7 @@ ShadeTarget makeShadeTarget(const RasterState& state, Framebuffer& fb, const Tri
 
 bool setupTriangle(const RasterState& state, const Framebuffer& fb, const FixedTriangle& fixed,
                    const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2,
-                   const float* flatVaryings, TriangleSetup& t) {
+                   const float* flatVaryings, PrimitiveSetup& t) {
   // Bounding box as llvmpipe computes it (x1 exclusive of a right vertex on a
   // pixel centre, y0 exclusive of a top one, for GL's bottom-left rule).
   const int32_t minX = std::min({fixed.x[0], fixed.x[1], fixed.x[2]});
@@ -126,6 +126,7 @@ bool setupTriangle(const RasterState& state, const Framebuffer& fb, const FixedT
   t.y1 = std::min({t.y1, height - 1 - state.scissorY0, height - 1});
   if (t.x0 > t.x1 || t.y0 > t.y1) return false;
 
+  t.edgeCount = 3;
   for (int i = 0; i < 3; ++i) t.edge[i] = Edge::make(fixed, i);
 
   t.varyingCount = state.varyingCount == 8 ? 8 : 4;
@@ -146,16 +147,20 @@ bool setupTriangle(const RasterState& state, const Framebuffer& fb, const FixedT
   return true;
 }
 
+void shadePrimitive(const RasterState& state, Framebuffer& fb, const PrimitiveSetup& t) {
+  const ShadeTarget target = makeShadeTarget(state, fb, t);
+  if (kUseAvx2)
+    shadePrimitiveAvx2(t, target);
+  else
+    shadePrimitiveScalar(t, target);
+}
+
 void rasterCcwTriangle(const RasterState& state, Framebuffer& fb, const FixedTriangle& fixed,
                        const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2,
                        const float* flatVaryings) {
-  TriangleSetup t;
+  PrimitiveSetup t;
   if (!setupTriangle(state, fb, fixed, v0, v1, v2, flatVaryings, t)) return;
-  const ShadeTarget target = makeShadeTarget(state, fb, t);
-  if (kUseAvx2)
-    shadeTriangleAvx2(t, target);
-  else
-    shadeTriangleScalar(t, target);
+  shadePrimitive(state, fb, t);
 }
 
 void drawTriangle(const RasterState& state, Framebuffer& fb, const WindowVertex& v0, const WindowVertex& v1,

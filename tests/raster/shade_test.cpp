@@ -5,7 +5,7 @@
 
 #include "raster/raster.h"
 #include "raster/test_surface.h"
-#include "raster/triangle_setup.h"
+#include "raster/primitive_setup.h"
 
 namespace glfixed::raster {
 namespace {
@@ -14,13 +14,13 @@ using test::TestSurface;
 
 void shadeAll(const RasterState& st, TestSurface& s, const FixedTriangle& f, const WindowVertex* v,
               const float* flat, bool avx2) {
-  TriangleSetup t;
+  PrimitiveSetup t;
   if (!setupTriangle(st, s.fb, f, v[0], v[1], v[2], flat, t)) return;
   const ShadeTarget target = makeShadeTarget(st, s.fb, t);
   if (avx2)
-    shadeTriangleAvx2(t, target);
+    shadePrimitiveAvx2(t, target);
   else
-    shadeTriangleScalar(t, target);
+    shadePrimitiveScalar(t, target);
 }
 
 TEST(Shade, Avx2MatchesScalar) {

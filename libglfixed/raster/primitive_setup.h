@@ -1,6 +1,10 @@
-// Internal to the rasterizer: one triangle, set up, and where its fragments
-// go. triangle.cpp fills these; the span shaders (scalar in triangle.cpp,
-// AVX2 in shade_avx2.cpp) consume them and must give identical results.
+// Internal to the rasterizer: one primitive, set up, and where its fragments
+// go. llvmpipe rasterizes triangles, lines and points alike, as a convex
+// polygon of 3 or 4 fixed-point edges with attribute planes
+// (lp_setup_tri.c, lp_setup_line.c, lp_setup_point.c); only the set-up
+// differs. triangle.cpp (and the line and point set-ups) fill these; the span
+// shaders (scalar in triangle.cpp, AVX2 in shade_avx2.cpp) consume them and
+// must give identical results.
 #pragma once
 
 #include <GL/gl.h>
@@ -13,8 +17,11 @@
 
 namespace glfixed::raster {
 
-struct TriangleSetup {
-  Edge edge[3];
+constexpr int kMaxEdges = 4;
+
+struct PrimitiveSetup {
+  Edge edge[kMaxEdges];
+  int edgeCount = 3;            // 3: a triangle; 4: a line's or a point's quadrilateral
   Plane z, w;                   // window z; 1/w_clip
   Plane varying[kMaxVaryings];  // attribute * (1/w), for perspective correction
   float flat[kMaxVaryings];
@@ -44,28 +51,33 @@ struct ShadeTarget {
 // false when it covers no pixel of the drawable region.
 bool setupTriangle(const RasterState& state, const Framebuffer& fb, const FixedTriangle& fixed,
                    const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2,
-                   const float* flatVaryings, TriangleSetup& out);
-ShadeTarget makeShadeTarget(const RasterState& state, Framebuffer& fb, const TriangleSetup& t);
+                   const float* flatVaryings, PrimitiveSetup& out);
+ShadeTarget makeShadeTarget(const RasterState& state, Framebuffer& fb, const PrimitiveSetup& t);
 
-// Calls span(py, lo, hi) for every row of the triangle with pixels inside,
+// Shades every fragment of a set-up primitive (the AVX2 shader where the CPU
+// has it, else the scalar one).
+void shadePrimitive(const RasterState& state, Framebuffer& fb, const PrimitiveSetup& t);
+
+// Calls span(py, lo, hi) for every row of the primitive with pixels inside,
 // [lo, hi] being exactly the pixels inside on that row. (shade_avx2.cpp has
 // the same loop written out, to keep it inside its target attribute.)
 template <typename Span>
-inline void forEachSpan(const TriangleSetup& t, Span&& span) {
-  EdgeSpanStepper edge[3] = {{t.edge[0], t.y0}, {t.edge[1], t.y0}, {t.edge[2], t.y0}};
+inline void forEachSpan(const PrimitiveSetup& t, Span&& span) {
+  EdgeSpanStepper edge[kMaxEdges];
+  for (int i = 0; i < t.edgeCount; ++i) edge[i] = EdgeSpanStepper(t.edge[i], t.y0);
   for (int py = t.y0; py <= t.y1; ++py) {
     int64_t lo = t.x0, hi = t.x1;
-    for (const EdgeSpanStepper& e : edge) e.clip(lo, hi);
+    for (int i = 0; i < t.edgeCount; ++i) edge[i].clip(lo, hi);
     if (lo <= hi) span(py, static_cast<int>(lo), static_cast<int>(hi));
-    for (EdgeSpanStepper& e : edge) e.nextRow();
+    for (int i = 0; i < t.edgeCount; ++i) edge[i].nextRow();
   }
 }
 
-// Shades every pixel of the triangle, one fragment at a time.
-void shadeTriangleScalar(const TriangleSetup& t, const ShadeTarget& s);
+// Shades every pixel of the primitive, one fragment at a time.
+void shadePrimitiveScalar(const PrimitiveSetup& t, const ShadeTarget& s);
 // The same with AVX2 and FMA, eight fragments at a time, to the same bits.
 // Call only when the CPU has both (haveAvx2Fma()).
-void shadeTriangleAvx2(const TriangleSetup& t, const ShadeTarget& s);
+void shadePrimitiveAvx2(const PrimitiveSetup& t, const ShadeTarget& s);
 bool haveAvx2Fma();
 
 }  // namespace glfixed::raster

@@ -68,6 +68,12 @@ bool queryHeldState(Context& ctx, GLenum pname, StateValue& out) {
       return true;
     }
     case GL_POINT_SPRITE_COORD_ORIGIN: out.set({double(ctx.point.spriteCoordOrigin)}); return true;
+    // Points: GL_POINT_SIZE_MAX and Mesa 22.3's llvmpipe limits (probed):
+    // aliased and smooth sizes 1 to 255, granularity 0.1f.
+    case GL_POINT_SIZE_MAX: out.set({ctx.point.sizeMax}); return true;
+    case GL_POINT_SIZE_RANGE:  // = GL_SMOOTH_POINT_SIZE_RANGE
+    case GL_ALIASED_POINT_SIZE_RANGE: out.set({1.0, 255.0}); return true;
+    case GL_POINT_SIZE_GRANULARITY: out.set({double(0.1f)}); return true;  // = GL_SMOOTH_POINT_SIZE_GRANULARITY
     case GL_SCISSOR_BOX:
       out.set({double(ctx.scissor.x), double(ctx.scissor.y), double(ctx.scissor.width),
                double(ctx.scissor.height)});

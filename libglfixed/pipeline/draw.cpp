@@ -38,6 +38,18 @@ primitive::PrimitiveState primitiveState(const Context& ctx, GLenum mode, bool s
   r.scissorY0 = std::max(0, ctx.viewport.y);
   r.scissorX1 = std::min(ctx.framebuffer.width(), ctx.viewport.x + ctx.viewport.width);
   r.scissorY1 = std::min(ctx.framebuffer.height(), ctx.viewport.y + ctx.viewport.height);
+  // Points (primitive.h): the size as the state tracker clamps it, CLAMP(x,
+  // min, max) = x > min ? (x > max ? max : x) : min; per-vertex sizes under
+  // distance attenuation (the vertex stage computes them).
+  {
+    const PointAttrib& p = ctx.point;
+    s.pointSize = p.size > p.sizeMin ? (p.size > p.sizeMax ? p.sizeMax : p.size) : p.sizeMin;
+    const glm::vec3& a = p.distanceAttenuation;
+    s.pointSizePerVertex = a.x != 1.0f || a.y != 0.0f || a.z != 0.0f;
+    s.pointSmooth = p.smooth && !p.sprite;
+    s.pointRegionX1 = ctx.framebuffer.width();
+    s.pointRegionY1 = ctx.framebuffer.height();
+  }
   return s;
 }
 

@@ -67,6 +67,19 @@ void rasterCcwTriangle(const RasterState& state, Framebuffer& fb, const FixedTri
 void drawTriangle(const RasterState& state, Framebuffer& fb, const WindowVertex& v0, const WindowVertex& v1,
                   const WindowVertex& v2, const float* flatVaryings);
 
+// Points (raster/point.cpp). The pixels a point may cover, in GL window
+// coordinates (y up), [x0, x1) x [y0, y1): llvmpipe clips points to the
+// framebuffer (and scissor), not to the viewport.
+struct PointRegion {
+  int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+};
+// The width in pixels llvmpipe gives a non-smooth point of `size`: rounded,
+// .5 down, at least 1, at most 255; a NaN size is 1.
+int pointWidthInPixels(float size);
+// A non-smooth, non-sprite point at `v` (llvmpipe's window space) of `size`;
+// `flatVaryings` as for drawTriangle.
+void drawPoint(const RasterState& state, Framebuffer& fb, const PointRegion& region, const WindowVertex& v,
+               float size, const float* flatVaryings);
 // Float colour to 8 bits as llvmpipe's colour output does it: clamp to [0,1]
 // (NaN gives 0), then rint(v * 255) in single precision.
 inline uint8_t colorToUnorm8(float v) {

@@ -38,6 +38,14 @@ primitive::PrimitiveState primitiveState(const Context& ctx, GLenum mode, bool s
   r.scissorY0 = std::max(0, ctx.viewport.y);
   r.scissorX1 = std::min(ctx.framebuffer.width(), ctx.viewport.x + ctx.viewport.width);
   r.scissorY1 = std::min(ctx.framebuffer.height(), ctx.viewport.y + ctx.viewport.height);
+
+  // Lines (primitive/lines.cpp): Mesa's rasterizer state (st_atom_rasterizer.c).
+  // CLAMP turns NaN into the minimum.
+  s.lineWidth = ctx.line.width > 1.0f ? (ctx.line.width > 255.0f ? 255.0f : ctx.line.width) : 1.0f;
+  s.lineSmooth = ctx.line.smooth;
+  s.lineStipple = ctx.line.stipple && ctx.line.stipplePattern != 0xffff;
+  s.lineStippleFactor = ctx.line.stippleRepeat;
+  s.lineStipplePattern = ctx.line.stipplePattern;
   return s;
 }
 

@@ -221,6 +221,11 @@ bool queryCoreState(Context& ctx, GLenum pname, StateValue& out) {
     }
     case GL_MAX_LIST_NESTING: out.set({double(kMaxListNesting)}); return true;
     case GL_SUBPIXEL_BITS: out.set({double(kSubpixelBits)}); return true;
+    // Lines: llvmpipe's limits as Mesa 22.3 reports them (probed; Mesa keeps
+    // them as floats). GL_LINE_WIDTH_RANGE is GL_SMOOTH_LINE_WIDTH_RANGE.
+    case GL_LINE_WIDTH_RANGE:
+    case GL_ALIASED_LINE_WIDTH_RANGE: out.set({1.0, 255.0}); return true;
+    case GL_LINE_WIDTH_GRANULARITY: out.set({double(0.1f)}); return true;
     case GL_RED_BITS: case GL_GREEN_BITS: case GL_BLUE_BITS: out.set({8.0}); return true;
     case GL_ALPHA_BITS: out.set({hasAlpha ? 8.0 : 0.0}); return true;
     case GL_DEPTH_BITS: out.set({double(fb.depth.bits())}); return true;

@@ -50,6 +50,14 @@ primitive::PrimitiveState primitiveState(const Context& ctx, GLenum mode, bool s
     s.pointRegionX1 = ctx.framebuffer.width();
     s.pointRegionY1 = ctx.framebuffer.height();
   }
+
+  // Lines (primitive/lines.cpp): Mesa's rasterizer state (st_atom_rasterizer.c).
+  // CLAMP turns NaN into the minimum.
+  s.lineWidth = ctx.line.width > 1.0f ? (ctx.line.width > 255.0f ? 255.0f : ctx.line.width) : 1.0f;
+  s.lineSmooth = ctx.line.smooth;
+  s.lineStipple = ctx.line.stipple && ctx.line.stipplePattern != 0xffff;
+  s.lineStippleFactor = ctx.line.stippleRepeat;
+  s.lineStipplePattern = ctx.line.stipplePattern;
   return s;
 }
 

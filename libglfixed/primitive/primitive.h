@@ -4,6 +4,8 @@
 
 #include <GL/gl.h>
 
+#include <cstdint>
+
 #include "framebuffer/framebuffer.h"
 #include "pipeline/vertex_batch.h"
 #include "raster/raster.h"
@@ -43,6 +45,15 @@ struct PrimitiveState {
   // fetches its whole index range: pipeline/array_draw.cpp).
   bool fetchedVertexOutside = false;
   bool constantSecondary = false;
+  // Lines (GL 2.1 §3.5; primitive/lines.cpp), as Mesa's state tracker hands
+  // them to llvmpipe (st_atom_rasterizer.c): the width clamped to [1, 255]
+  // (NaN gives 1); stipple only when enabled with a pattern other than
+  // 0xffff; GL_LINE_SMOOTH makes rectangular, antialiased lines.
+  float lineWidth = 1;
+  bool lineSmooth = false;
+  bool lineStipple = false;
+  int lineStippleFactor = 1;  // [1, 256]
+  uint16_t lineStipplePattern = 0xffff;
   raster::RasterState raster;  // depth test, scissor to the viewport, ...
   // Points (GL 2.1 §3.4; primitive/points.cpp). pointSize: glPointSize
   // clamped to [GL_POINT_SIZE_MIN, GL_POINT_SIZE_MAX] as the state tracker

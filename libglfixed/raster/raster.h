@@ -44,6 +44,11 @@ struct RasterState {
   // as a constant (PrimitiveState::constantPrimary) makes only that one.
   unsigned flatGroups = kPrimaryGroup | kSecondaryGroup;
   static constexpr unsigned kPrimaryGroup = 1, kSecondaryGroup = 2;
+  // Lines (raster/line.cpp): llvmpipe draws a line wherever it falls in its
+  // draw region, the framebuffer (cut by the scissor box when there is one),
+  // not in the viewport: [lineRegionX0, lineRegionX1) x [lineRegionY0,
+  // lineRegionY1) in GL window coordinates, further cut to the buffer.
+  int lineRegionX0 = 0, lineRegionY0 = 0, lineRegionX1 = 1 << 30, lineRegionY1 = 1 << 30;
 };
 
 // Snaps the three vertices to llvmpipe's 1/256 grid (fixed_point.h) and
@@ -80,6 +85,19 @@ int pointWidthInPixels(float size);
 // `flatVaryings` as for drawTriangle.
 void drawPoint(const RasterState& state, Framebuffer& fb, const PointRegion& region, const WindowVertex& v,
                float size, const float* flatVaryings);
+// How llvmpipe's line set-up draws a line (lp_setup_line.c): `width` as the
+// rasterizer state has it (glLineWidth clamped to Mesa's range); aliased
+// lines round it, rectangular ones (GL_LINE_SMOOTH) use it as it is.
+struct LineStyle {
+  float width = 1;
+  bool rectangular = false;
+};
+
+// One line segment from v1 to v2 in llvmpipe's window space (raster/line.cpp).
+// `flatVaryings` as for drawTriangle.
+void drawLine(const RasterState& state, Framebuffer& fb, const LineStyle& style, const WindowVertex& v1,
+              const WindowVertex& v2, const float* flatVaryings);
+
 // Float colour to 8 bits as llvmpipe's colour output does it: clamp to [0,1]
 // (NaN gives 0), then rint(v * 255) in single precision.
 inline uint8_t colorToUnorm8(float v) {

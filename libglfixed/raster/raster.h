@@ -80,6 +80,11 @@ int pointWidthInPixels(float size);
 // `flatVaryings` as for drawTriangle.
 void drawPoint(const RasterState& state, Framebuffer& fb, const PointRegion& region, const WindowVertex& v,
                float size, const float* flatVaryings);
+// A GL_POINT_SMOOTH point of `radius` (Mesa's draw module makes it a quad of
+// two triangles with a coverage shader: raster/point.cpp).
+void drawSmoothPoint(const RasterState& state, Framebuffer& fb, const PointRegion& region, const WindowVertex& v,
+                     float radius, const float* flatVaryings);
+
 // Float colour to 8 bits as llvmpipe's colour output does it: clamp to [0,1]
 // (NaN gives 0), then rint(v * 255) in single precision.
 inline uint8_t colorToUnorm8(float v) {

@@ -22,14 +22,24 @@ namespace {
 // llvmpipe's largest point (LP_MAX_POINT_WIDTH).
 constexpr float kMaxPointWidth = 255.0f;
 
+// llvmpipe's subpixel_snap for points: util_iround(256 v), which on x86-64
+// is the C fallback (int)(v + 0.5f), or (int)(v - 0.5f) below zero: ties go
+// away from zero, not to even as a triangle's snap does (scene
+// points_random). Out of range and NaN give INT32_MIN, as cvttss2si does.
+int32_t snapPoint(float v) {
+  const float scaled = v * float(kFixedOne);
+  const float r = scaled >= 0.0f ? scaled + 0.5f : scaled - 0.5f;
+  if (!(r > -2147483648.0f && r < 2147483648.0f)) return INT32_MIN;
+  return static_cast<int32_t>(r);
+}
+
 }  // namespace
 
 int pointWidthInPixels(float size) {
   if (size > kMaxPointWidth) size = kMaxPointWidth;
   // (snap(size) + 127) & ~255, at least one pixel; a NaN size snaps to
   // INT32_MIN and so gives one pixel.
-  const int64_t fixed =
-      (int64_t(roundToInt32(size * float(kFixedOne))) + kFixedOne / 2 - 1) & ~int64_t(kFixedOne - 1);
+  const int64_t fixed = (int64_t(snapPoint(size)) + kFixedOne / 2 - 1) & ~int64_t(kFixedOne - 1);
   return static_cast<int>(std::max<int64_t>(kFixedOne, fixed) >> kSubpixelBits);
 }
 
@@ -37,8 +47,8 @@ bool setupPoint(const RasterState& state, const PointRegion& region, int framebu
                 const WindowVertex& v, float size, const float* flatVaryings, PrimitiveSetup& t) {
   // The vertex in fixed point without the half-pixel shift triangles use;
   // y one unit up for GL's bottom-left fill convention (llvmpipe's `adj`).
-  const int64_t x0 = roundToInt32(v.x * float(kFixedOne));
-  const int64_t y0 = int64_t(roundToInt32(v.y * float(kFixedOne))) - 1;
+  const int64_t x0 = snapPoint(v.x);
+  const int64_t y0 = int64_t(snapPoint(v.y)) - 1;
   const int width = pointWidthInPixels(size);
   int64_t bx, by;
   if (width == 1) {

@@ -11,6 +11,7 @@
 #include <cstdint>
 
 #include "raster/fixed_point.h"
+#include "raster/interpolate.h"
 #include "raster/primitive_setup.h"
 #include "raster/raster.h"
 
@@ -21,14 +22,24 @@ namespace {
 // llvmpipe's largest point (LP_MAX_POINT_WIDTH).
 constexpr float kMaxPointWidth = 255.0f;
 
+// llvmpipe's subpixel_snap for points: util_iround(256 v), which on x86-64
+// is the C fallback (int)(v + 0.5f), or (int)(v - 0.5f) below zero: ties go
+// away from zero, not to even as a triangle's snap does (scene
+// points_random). Out of range and NaN give INT32_MIN, as cvttss2si does.
+int32_t snapPoint(float v) {
+  const float scaled = v * float(kFixedOne);
+  const float r = scaled >= 0.0f ? scaled + 0.5f : scaled - 0.5f;
+  if (!(r > -2147483648.0f && r < 2147483648.0f)) return INT32_MIN;
+  return static_cast<int32_t>(r);
+}
+
 }  // namespace
 
 int pointWidthInPixels(float size) {
   if (size > kMaxPointWidth) size = kMaxPointWidth;
   // (snap(size) + 127) & ~255, at least one pixel; a NaN size snaps to
   // INT32_MIN and so gives one pixel.
-  const int64_t fixed =
-      (int64_t(roundToInt32(size * float(kFixedOne))) + kFixedOne / 2 - 1) & ~int64_t(kFixedOne - 1);
+  const int64_t fixed = (int64_t(snapPoint(size)) + kFixedOne / 2 - 1) & ~int64_t(kFixedOne - 1);
   return static_cast<int>(std::max<int64_t>(kFixedOne, fixed) >> kSubpixelBits);
 }
 
@@ -36,8 +47,8 @@ bool setupPoint(const RasterState& state, const PointRegion& region, int framebu
                 const WindowVertex& v, float size, const float* flatVaryings, PrimitiveSetup& t) {
   // The vertex in fixed point without the half-pixel shift triangles use;
   // y one unit up for GL's bottom-left fill convention (llvmpipe's `adj`).
-  const int64_t x0 = roundToInt32(v.x * float(kFixedOne));
-  const int64_t y0 = int64_t(roundToInt32(v.y * float(kFixedOne))) - 1;
+  const int64_t x0 = snapPoint(v.x);
+  const int64_t y0 = int64_t(snapPoint(v.y)) - 1;
   const int width = pointWidthInPixels(size);
   int64_t bx, by;
   if (width == 1) {
@@ -87,6 +98,67 @@ void drawPoint(const RasterState& state, Framebuffer& fb, const PointRegion& reg
   PrimitiveSetup t;
   if (!setupPoint(state, region, fb.height(), v, size, flatVaryings, t)) return;
   shadePrimitive(state, fb, t);
+}
+
+namespace {
+
+// One triangle of the aapoint quad through llvmpipe's triangle set-up (no
+// culling: the stage binds a rasterizer state without it), with the
+// (s, t) planes of the aapoint shader.
+void drawSmoothPointTriangle(const RasterState& state, Framebuffer& fb, const WindowVertex* v[3],
+                             const float st[3][2], float k, const float* flatVaryings) {
+  FixedTriangle f;
+  const int sign = snapTriangle(*v[0], *v[1], *v[2], f);
+  if (sign == 0) return;
+  int order[3] = {0, 1, 2};
+  if (sign < 0) {  // the swap llvmpipe makes to keep the provoking vertex in its slot (drawTriangle)
+    if (state.firstVertexConvention)
+      order[1] = 2, order[2] = 1;
+    else
+      order[0] = 1, order[1] = 0;
+  }
+  FixedTriangle r;
+  for (int i = 0; i < 3; ++i) r.x[i] = f.x[order[i]], r.y[i] = f.y[order[i]];
+  const WindowVertex& a = *v[order[0]];
+  const WindowVertex& b = *v[order[1]];
+  const WindowVertex& c = *v[order[2]];
+  PrimitiveSetup t;
+  if (!setupTriangle(state, fb, r, a, b, c, flatVaryings, t)) return;
+  const PlaneSetup ps(a.x, a.y, b.x, b.y, c.x, c.y);
+  // The w plane is needed even when every colour is flat.
+  t.w = ps.plane(a.oneOverW, b.oneOverW, c.oneOverW);
+  t.aaPoint = true;
+  t.aaS = ps.plane(st[order[0]][0] * a.oneOverW, st[order[1]][0] * b.oneOverW, st[order[2]][0] * c.oneOverW);
+  t.aaT = ps.plane(st[order[0]][1] * a.oneOverW, st[order[1]][1] * b.oneOverW, st[order[2]][1] * c.oneOverW);
+  t.aaK = k;
+  shadePrimitive(state, fb, t);
+}
+
+}  // namespace
+
+void drawSmoothPoint(const RasterState& state, Framebuffer& fb, const PointRegion& region,
+                     const WindowVertex& v, float radius, const float* flatVaryings) {
+  // draw_pipe_aapoint.c, aapoint_point: k = (1 - 1/r)^2 computed as
+  // 1 - 2/r + 1/r^2; the quad's corners at the centre -+ r, with (s, t) from
+  // (-1, -1) to (1, 1); triangles (0, 1, 2) and (0, 2, 3).
+  float k = 1.0f / radius;
+  k = 1.0f - 2.0f * k + k * k;
+  WindowVertex corner[4] = {v, v, v, v};
+  corner[0].x = v.x - radius, corner[0].y = v.y - radius;
+  corner[1].x = v.x + radius, corner[1].y = v.y - radius;
+  corner[2].x = v.x + radius, corner[2].y = v.y + radius;
+  corner[3].x = v.x - radius, corner[3].y = v.y + radius;
+  static const float st[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+  // The quad is not clipped: only the point's region bounds it.
+  RasterState inRegion = state;
+  inRegion.scissorX0 = region.x0, inRegion.scissorY0 = region.y0;
+  inRegion.scissorX1 = region.x1, inRegion.scissorY1 = region.y1;
+  const WindowVertex* first[3] = {&corner[0], &corner[1], &corner[2]};
+  const float firstSt[3][2] = {{st[0][0], st[0][1]}, {st[1][0], st[1][1]}, {st[2][0], st[2][1]}};
+  drawSmoothPointTriangle(inRegion, fb, first, firstSt, k, flatVaryings);
+  const WindowVertex* second[3] = {&corner[0], &corner[2], &corner[3]};
+  const float secondSt[3][2] = {{st[0][0], st[0][1]}, {st[2][0], st[2][1]}, {st[3][0], st[3][1]}};
+  drawSmoothPointTriangle(inRegion, fb, second, secondSt, k, flatVaryings);
 }
 
 }  // namespace glfixed::raster

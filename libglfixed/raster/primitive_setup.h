@@ -28,6 +28,16 @@ struct PrimitiveSetup {
   bool flatPrimary = false, flatSecondary = false;  // these take `flat`, uninterpolated
   int varyingCount = 4;
   int x0 = 0, x1 = -1, y0 = 0, y1 = -1;  // inclusive pixel bounds, llvmpipe (y-down) rows
+  // Smooth points (raster/point.cpp): one of the two triangles of the draw
+  // module's aapoint quad, whose fragment shader Mesa rewrites
+  // (nir_lower_aapoint_fs): d = s^2 + t^2 from the interpolated (s, t) in
+  // [-1, 1]; a fragment with d > 1 is discarded; else alpha is multiplied by
+  // (1 - d) / (1 - k) where d <= k, and by 1 elsewhere (sic: Mesa's NIR pass
+  // swaps the two, so the disc's inside is brightened and its rim kept).
+  // Only the scalar shader has this rule; shadePrimitive sends these there.
+  bool aaPoint = false;
+  Plane aaS, aaT;  // s and t times 1/w, as a perspective input
+  float aaK = 0;
 };
 
 // The framebuffer as the span shaders see it.

@@ -85,6 +85,10 @@ int pointWidthInPixels(float size);
 // `flatVaryings` as for drawTriangle.
 void drawPoint(const RasterState& state, Framebuffer& fb, const PointRegion& region, const WindowVertex& v,
                float size, const float* flatVaryings);
+// A GL_POINT_SMOOTH point of `radius` (Mesa's draw module makes it a quad of
+// two triangles with a coverage shader: raster/point.cpp).
+void drawSmoothPoint(const RasterState& state, Framebuffer& fb, const PointRegion& region, const WindowVertex& v,
+                     float radius, const float* flatVaryings);
 // How llvmpipe's line set-up draws a line (lp_setup_line.c): `width` as the
 // rasterizer state has it (glLineWidth clamped to Mesa's range); aliased
 // lines round it, rectangular ones (GL_LINE_SMOOTH) use it as it is.

@@ -39,6 +39,16 @@ void shadeSpanScalar(const PrimitiveSetup& t, const ShadeTarget& s, int py, int 
       s.depthBits == 16 ? static_cast<uint16_t*>(s.depth) + size_t(glY) * s.depthWidth : nullptr;
   for (int px = lo; px <= hi; ++px) {
     const float fpx = static_cast<float>(px);
+    // Smooth points: the aapoint shader's discard and alpha factor (primitive_setup.h).
+    float aaFactor = 1.0f;
+    if (t.aaPoint) {
+      const float oowAa = 1.0f / t.w.at(fpx, fpy);
+      const float ps = t.aaS.at(fpx, fpy) * oowAa, pt = t.aaT.at(fpx, fpy) * oowAa;
+      const float d = ps * ps + pt * pt;
+      if (1.0f < d) continue;
+      const float coverage = (1.0f / (1.0f - t.aaK)) * (1.0f - d);
+      aaFactor = t.aaK >= d ? coverage : 1.0f;
+    }
     if (s.depthBits) {
       const uint32_t z = depthToUnorm(t.z.at(fpx, fpy), s.depthBits);
       const uint32_t stored = depth32 ? depth32[px] : depth16[px];
@@ -63,6 +73,7 @@ void shadeSpanScalar(const PrimitiveSetup& t, const ShadeTarget& s, int py, int 
       c[1] += c[5];
       c[2] += c[6];
     }
+    if (t.aaPoint) c[3] = c[3] * aaFactor;
     const uint8_t rgba[4] = {colorToUnorm8(c[0]), colorToUnorm8(c[1]), colorToUnorm8(c[2]),
                              colorToUnorm8(c[3])};
     uint8_t* p = colorRow + size_t(px) * s.bytesPerPixel;
@@ -149,7 +160,7 @@ bool setupTriangle(const RasterState& state, const Framebuffer& fb, const FixedT
 
 void shadePrimitive(const RasterState& state, Framebuffer& fb, const PrimitiveSetup& t) {
   const ShadeTarget target = makeShadeTarget(state, fb, t);
-  if (kUseAvx2)
+  if (kUseAvx2 && !t.aaPoint)  // smooth points: the scalar shader only (primitive_setup.h)
     shadePrimitiveAvx2(t, target);
   else
     shadePrimitiveScalar(t, target);

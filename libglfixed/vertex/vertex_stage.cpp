@@ -29,7 +29,17 @@ inline glm::vec4 transformPosition(const glm::mat4& m, const glm::vec4& p) {
 // second one (measured: a NaN attenuation draws a size-min point).
 float attenuatedPointSize(const VertexState& state, const glm::vec4& p) {
   const glm::mat4& m = state.eyeFromObject;
-  const float zEye = ((p.w * m[3][2] + p.z * m[2][2]) + p.y * m[1][2]) + p.x * m[0][2];
+  // When lighting has computed the whole eye position (a positional light or
+  // a local viewer: lighting.cpp), the program reuses its z, summed column
+  // by column.
+  bool eyePosition = false;
+  if (state.lighting && state.lightingConstants) {
+    const LightingConstants& k = *state.lightingConstants;
+    eyePosition = k.localViewer;
+    for (int l = 0; l < k.lightCount; ++l) eyePosition |= k.lights[l].positional;
+  }
+  const float zEye = eyePosition ? ((p.x * m[0][2] + p.y * m[1][2]) + p.z * m[2][2]) + p.w * m[3][2]
+                                 : ((p.w * m[3][2] + p.z * m[2][2]) + p.y * m[1][2]) + p.x * m[0][2];
   const float d = std::fabs(zEye);
   const glm::vec3& a = state.pointAttenuation;
   float factor = d * a.z + a.y;

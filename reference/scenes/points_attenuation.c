@@ -77,6 +77,35 @@ int main(int argc, char **argv)
     glDisable(GL_LIGHTING);
     glPopMatrix();
 
+    /* Random clouds under a rotated modelview, unlit, then lit by a
+     * positional light (the program then takes z_eye from the whole eye
+     * position), many sizes near the .5 boundaries. */
+    glPushMatrix();
+    glRotatef(-25.0f, 1.0f, 0.3f, 0.0f);
+    attenuation(0.3f, 0.05f, 0.015f);
+    glPointParameterf(GL_POINT_SIZE_MAX, 20.0f);
+    scene_srand(21);
+    for (int pass = 0; pass < 2; ++pass) {
+        if (pass == 1) {
+            glEnable(GL_LIGHTING);
+            glEnable(GL_LIGHT0);
+            light_fv(GL_LIGHT0, GL_POSITION, 1.0f, 2.0f, 2.0f, 1.0f);
+        }
+        for (int k = 0; k < 6; ++k) {
+            glPointSize(2.0f + 1.37f * (float)k);
+            glBegin(GL_POINTS);
+            for (int i = 0; i < 40; ++i) {
+                glColor3f(scene_randf(0, 1), scene_randf(0, 1), scene_randf(0, 1));
+                glNormal3f(scene_randf(-1, 1), scene_randf(-1, 1), 1.0f);
+                glVertex3f(scene_randf(-4.0f, 4.0f), scene_randf(-3.0f, 3.0f), scene_randf(-12.0f, 2.0f));
+            }
+            glEnd();
+        }
+    }
+    glDisable(GL_LIGHTING);
+    glPopMatrix();
+    glPointParameterf(GL_POINT_SIZE_MAX, 255.0f);
+
     /* Bad coefficients: NaN gives the minimum, 0 and 1e-30 the maximum, 1e30 the minimum. */
     glPointParameterf(GL_POINT_SIZE_MAX, 9.0f);
     glPointSize(5.0f);

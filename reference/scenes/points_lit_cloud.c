@@ -63,6 +63,19 @@ int main(int argc, char **argv)
         glEnd();
     }
 
+    /* Two-sided lighting: a point takes the front colours, whichever way its normal faces. */
+    glLightModeli(GL_LIGHT_MODEL_COLOR_CONTROL, GL_SINGLE_COLOR);
+    glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_TRUE);
+    light_mat(GL_BACK, GL_DIFFUSE, 0.1f, 0.9f, 0.1f, 1.0f);
+    glPointSize(4.0f);
+    glBegin(GL_POINTS);
+    for (int i = 0; i < 40; ++i) {
+        glNormal3f(scene_randf(-1, 1), scene_randf(-1, 1), scene_randf(-1, 0));
+        glVertex3f(scene_randf(-3.0f, 3.0f), scene_randf(-2.2f, 2.2f), scene_randf(-4.0f, 3.0f));
+    }
+    glEnd();
+    glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_FALSE);
+
     /* Unlit points with per-vertex colours, behind and in front of the rest. */
     glDisable(GL_LIGHTING);
     glPointSize(3.0f);

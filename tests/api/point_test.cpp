@@ -179,9 +179,13 @@ TEST_F(PointTest, PushPopAttribAndLists) {
   glPushAttrib(GL_POINT_BIT);
   glPointSize(7.0f);
   glPointParameterf(GL_POINT_SIZE_MIN, 3.0f);
+  glEnable(GL_POINT_SMOOTH);
+  EXPECT_NO_GL_ERROR();
+  EXPECT_EQ(GetBool(GL_POINT_SMOOTH), GL_TRUE);
   glPopAttrib();
   EXPECT_EQ(GetFloat(GL_POINT_SIZE), 1.0f);
   EXPECT_EQ(GetFloat(GL_POINT_SIZE_MIN), 0.0f);
+  EXPECT_EQ(GetBool(GL_POINT_SMOOTH), GL_FALSE);
 
   const GLuint list = glGenLists(1);
   glNewList(list, GL_COMPILE);
@@ -350,6 +354,38 @@ TEST_F(PointTest, ColourAndDepth) {
   EXPECT_EQ(at(22, 20)[1], 0);
   EXPECT_EQ(at(23, 20)[1], 255);  // green, right of it
   EXPECT_EQ(at(23, 20)[3], 255);
+  EXPECT_NO_GL_ERROR();
+}
+
+// GL_POINT_SMOOTH: Mesa's aapoint quad and coverage shader. Alpha is raised
+// inside the disc ((1 - d) / (1 - k), d the squared distance in radii, k =
+// (1 - 1/r)^2) and kept on its rim; fragments beyond the radius are dropped.
+TEST_F(PointTest, SmoothPointAlpha) {
+  SetUpPixels();
+  glEnable(GL_POINT_SMOOTH);
+  glPointSize(6.0f);
+  glBegin(GL_POINTS);
+  glColor4f(1.0f, 1.0f, 1.0f, 0.5f);
+  glVertex2f(30.5f, 30.5f);
+  glEnd();
+  const unsigned char* p = pixels();
+  auto at = [&](int x, int y) { return p + (y * kWidth + x) * 4; };
+  EXPECT_EQ(at(30, 30)[3], 230);  // 0.5 * 1 / (1 - 4/9)
+  EXPECT_EQ(at(27, 30)[3], 128);  // on the rim (a left edge of the quad): the vertex alpha
+  EXPECT_EQ(at(27, 30)[0], 255);
+  EXPECT_EQ(at(33, 30)[0], 0);  // on the quad's right edge: not drawn
+  EXPECT_EQ(at(34, 30)[0], 0);  // outside the disc
+  EXPECT_EQ(at(33, 33)[0], 0);
+  // Size 1 (radius 1): at a pixel corner the four pixels around it, at full
+  // alpha; at a pixel centre that pixel and two neighbours.
+  glClear(GL_COLOR_BUFFER_BIT);
+  glPointSize(1.0f);
+  DrawPoint(20.0f, 20.0f);
+  ExpectSquare(Covered(), 19, 19, 2);
+  EXPECT_EQ(pixels()[(19 * kWidth + 19) * 4 + 3], 255);
+  glClear(GL_COLOR_BUFFER_BIT);
+  DrawPoint(20.5f, 20.5f);
+  EXPECT_EQ(Covered().count, 3);
   EXPECT_NO_GL_ERROR();
 }
 

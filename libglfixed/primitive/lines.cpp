@@ -156,7 +156,10 @@ void emitLine(const BatchContext& b, const ClipVertex& v0, const ClipVertex& v1,
   style.width = b.state.lineWidth;
   style.rectangular = b.state.lineSmooth;
   auto draw = [&](const raster::WindowVertex& a, const raster::WindowVertex& c) {
-    raster::drawLine(b.raster, b.fb, style, a, c, flat);
+    if (style.rectangular)
+      raster::drawSmoothLine(b.raster, b.fb, style.width, a, c, flat);
+    else
+      raster::drawLine(b.raster, b.fb, style, a, c, flat);
   };
   if (b.state.lineStipple)
     stippleLine(b, w[0], w[1], style.rectangular, draw);

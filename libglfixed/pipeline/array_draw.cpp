@@ -84,11 +84,11 @@ void drawSegments(Context& ctx, const ArraySources& src, GLenum mode,
   }
 }
 
-// Points and lines are not rasterized yet; in GL_SELECT and GL_FEEDBACK each
-// point and line is reported alone (Mesa never writes a line reset token), so
-// chunks that keep the same primitives in the same order give the same
-// result: strips overlap by one vertex, a loop becomes strips and its
-// closing line.
+// Points and lines are drawn in chunks that keep the same primitives in the
+// same order (in GL_SELECT and GL_FEEDBACK each point and line is reported
+// alone: Mesa never writes a line reset token): strips overlap by one vertex,
+// a loop becomes strips and its closing line, and the line stipple pattern
+// carries on from chunk to chunk.
 template <typename ElementAt>
 void drawPointsOrLines(Context& ctx, const ArraySources& src, GLenum mode, uint32_t count,
                        const ElementAt& elementAt, Submission submission) {
@@ -103,7 +103,11 @@ void drawPointsOrLines(Context& ctx, const ArraySources& src, GLenum mode, uint3
     appendPositions(src, ctx, elementAt, start, end, batch);
     const bool last = end == count;
     if (last && chunkMode != mode) appendPositions(src, ctx, elementAt, 0, 1, batch);  // the closing line
+    // Lines: a strip's later chunks carry on its stipple pattern (Mesa's
+    // vsplit flags them DRAW_SPLIT_BEFORE).
+    ctx.lineStipple.continues = strip && start != 0;
     drawBatch(ctx, batch, submission, src.color);
+    ctx.lineStipple.continues = false;
     if (last) return;
     start = strip ? end - 1 : end;
   }

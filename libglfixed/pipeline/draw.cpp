@@ -58,6 +58,7 @@ primitive::PrimitiveState primitiveState(const Context& ctx, GLenum mode, bool s
   s.lineStipple = ctx.line.stipple && ctx.line.stipplePattern != 0xffff;
   s.lineStippleFactor = ctx.line.stippleRepeat;
   s.lineStipplePattern = ctx.line.stipplePattern;
+  s.lineStippleContinues = ctx.lineStipple.continues;
   return s;
 }
 
@@ -77,6 +78,7 @@ void drawBatch(Context& ctx, const VertexBatch& batch, primitive::PrimitiveState
   ps.submission = submission;
   ps.constantPrimary = !vs.lighting && !colorIsVertexData;
   ps.fetchedVertexOutside = fetchedVertexOutside;
+  ps.lineStippleCounter = &ctx.lineStipple.counter;  // lines: Mesa keeps it from draw to draw
   // GL_SELECT and GL_FEEDBACK: transformed and clipped, never rasterized (§5.2, §5.3).
   if (ctx.renderMode.mode == GL_SELECT)
     return primitive::selectPrimitives(ps, shaded, ctx.framebuffer.height(), ctx.renderMode.select);

@@ -47,6 +47,10 @@ void clipAndEmit(const BatchContext& b, const ClipVertex& v0, const ClipVertex& 
 
 void drawLineBatch(BatchContext& b, GLenum mode, uint32_t n, const std::vector<ClipVertex>& v,
                    const std::vector<uint32_t>& masks) {
+  // The stipple counter lives on from draw to draw, as in Mesa's draw module.
+  uint32_t* const carried = b.state.lineStippleCounter;
+  if (carried) b.lineStippleCounter = *carried;
+  const bool first = !b.state.lineStippleContinues;
   auto line = [&](uint32_t i, uint32_t j, bool restart) {
     clipAndEmit(b, v[i], v[j], masks[i], masks[j], restart);
   };
@@ -55,13 +59,14 @@ void drawLineBatch(BatchContext& b, GLenum mode, uint32_t n, const std::vector<C
       for (uint32_t i = 1; i < n; i += 2) line(i - 1, i, true);
       break;
     case GL_LINE_STRIP:
-      for (uint32_t i = 1; i < n; ++i) line(i - 1, i, i == 1);
+      for (uint32_t i = 1; i < n; ++i) line(i - 1, i, first && i == 1);
       break;
     default:  // GL_LINE_LOOP
-      for (uint32_t i = 1; i < n; ++i) line(i - 1, i, i == 1);
+      for (uint32_t i = 1; i < n; ++i) line(i - 1, i, first && i == 1);
       if (n >= 2) line(n - 1, 0, false);
       break;
   }
+  if (carried) *carried = b.lineStippleCounter;
 }
 
 namespace {
@@ -156,7 +161,10 @@ void emitLine(const BatchContext& b, const ClipVertex& v0, const ClipVertex& v1,
   style.width = b.state.lineWidth;
   style.rectangular = b.state.lineSmooth;
   auto draw = [&](const raster::WindowVertex& a, const raster::WindowVertex& c) {
-    raster::drawLine(b.raster, b.fb, style, a, c, flat);
+    if (style.rectangular)
+      raster::drawSmoothLine(b.raster, b.fb, style.width, a, c, flat);
+    else
+      raster::drawLine(b.raster, b.fb, style, a, c, flat);
   };
   if (b.state.lineStipple)
     stippleLine(b, w[0], w[1], style.rectangular, draw);

@@ -54,6 +54,8 @@ struct PrimitiveState {
   bool lineStipple = false;
   int lineStippleFactor = 1;  // [1, 256]
   uint16_t lineStipplePattern = 0xffff;
+  uint32_t* lineStippleCounter = nullptr;  // kept from draw to draw (Context::lineStipple)
+  bool lineStippleContinues = false;       // the batch goes on with the previous one's strip
   raster::RasterState raster;  // depth test, scissor to the viewport, ...
   // Points (GL 2.1 §3.4; primitive/points.cpp). pointSize: glPointSize
   // clamped to [GL_POINT_SIZE_MIN, GL_POINT_SIZE_MAX] as the state tracker

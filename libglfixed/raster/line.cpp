@@ -270,6 +270,83 @@ bool setupLine(const RasterState& state, const Framebuffer& fb, const LineStyle&
   return true;
 }
 
+namespace {
+
+// One triangle of a smooth line, with the aaline stage's coverage attribute
+// (x across, z along the line) at its vertices; set up as llvmpipe's triangle
+// setup does (a clockwise triangle reordered keeping the provoking slot).
+void drawCoverageTriangle(const RasterState& state, Framebuffer& fb, const WindowVertex* v[3],
+                          const float across[3], const float along[3], float halfWidth, float halfLength,
+                          const float* flatVaryings) {
+  FixedTriangle f;
+  const int sign = snapTriangle(*v[0], *v[1], *v[2], f);
+  if (sign == 0) return;
+  int order[3] = {0, 1, 2};
+  if (sign < 0) {
+    if (state.firstVertexConvention) {
+      order[1] = 2, order[2] = 1;
+    } else {
+      order[0] = 1, order[1] = 0;
+    }
+  }
+  const FixedTriangle r = {{f.x[order[0]], f.x[order[1]], f.x[order[2]]},
+                           {f.y[order[0]], f.y[order[1]], f.y[order[2]]}};
+  const WindowVertex &a = *v[order[0]], &b = *v[order[1]], &c = *v[order[2]];
+  PrimitiveSetup t;
+  if (!setupTriangle(state, fb, r, a, b, c, flatVaryings, t)) return;
+  const PlaneSetup ps(a.x, a.y, b.x, b.y, c.x, c.y);
+  t.lineCoverage = true;
+  t.w = ps.plane(a.oneOverW, b.oneOverW, c.oneOverW);
+  const float* w[3] = {&a.oneOverW, &b.oneOverW, &c.oneOverW};
+  t.coverageX = ps.plane(across[order[0]] * *w[0], across[order[1]] * *w[1], across[order[2]] * *w[2]);
+  t.coverageZ = ps.plane(along[order[0]] * *w[0], along[order[1]] * *w[1], along[order[2]] * *w[2]);
+  t.coverageHalfWidth = halfWidth;
+  t.coverageHalfLength = halfLength;
+  shadePrimitive(state, fb, t);
+}
+
+}  // namespace
+
+// GL_LINE_SMOOTH: the draw module's aaline stage (draw_pipe_aaline.c,
+// aaline_line): the line becomes a rectangle half a pixel longer at each end
+// and `halfWidth` wide on each side, drawn as two triangles; the fragment
+// shader scales alpha by the coverage (PrimitiveSetup::lineCoverage).
+void drawSmoothLine(const RasterState& lineState, Framebuffer& fb, float width, const WindowVertex& v0,
+                    const WindowVertex& v1, const float* flatVaryings) {
+  if (!std::isfinite(v0.x) || !std::isfinite(v0.y) || !std::isfinite(v1.x) || !std::isfinite(v1.y)) return;
+  const float halfWidth = width <= 1.0 ? 1.0f : 0.5f * width + 0.5f;
+  const float dx = v1.x - v0.x;
+  const float dy = v1.y - v0.y;
+  const float a = std::atan2(dy, dx);
+  const float cosA = std::cos(a), sinA = std::sin(a);
+  const float halfLength = 0.5f * std::sqrt(dx * dx + dy * dy) + 0.5f;
+  const float tw = halfWidth, tl = 0.5f;
+  WindowVertex q[4] = {v0, v0, v1, v1};
+  q[0].x += (-tl * cosA - tw * sinA);
+  q[0].y += (-tl * sinA + tw * cosA);
+  q[1].x += (-tl * cosA - -tw * sinA);
+  q[1].y += (-tl * sinA + -tw * cosA);
+  q[2].x += (tl * cosA - tw * sinA);
+  q[2].y += (tl * sinA + tw * cosA);
+  q[3].x += (tl * cosA - -tw * sinA);
+  q[3].y += (tl * sinA + -tw * cosA);
+  const float across[4] = {-halfWidth, halfWidth, -halfWidth, halfWidth};
+  const float along[4] = {-halfLength, -halfLength, halfLength, halfLength};
+  // The triangles are not clipped again: they are cut at the draw region.
+  RasterState state = lineState;
+  state.scissorX0 = state.lineRegionX0;
+  state.scissorY0 = state.lineRegionY0;
+  state.scissorX1 = state.lineRegionX1;
+  state.scissorY1 = state.lineRegionY1;
+  const int tris[2][3] = {{2, 1, 0}, {3, 1, 2}};
+  for (const auto& tri : tris) {
+    const WindowVertex* v[3] = {&q[tri[0]], &q[tri[1]], &q[tri[2]]};
+    const float x[3] = {across[tri[0]], across[tri[1]], across[tri[2]]};
+    const float z[3] = {along[tri[0]], along[tri[1]], along[tri[2]]};
+    drawCoverageTriangle(state, fb, v, x, z, halfWidth, halfLength, flatVaryings);
+  }
+}
+
 void drawLine(const RasterState& state, Framebuffer& fb, const LineStyle& style, const WindowVertex& v1,
               const WindowVertex& v2, const float* flatVaryings) {
   PrimitiveSetup t;

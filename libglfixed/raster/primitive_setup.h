@@ -9,6 +9,7 @@
 
 #include <GL/gl.h>
 
+#include <cmath>
 #include <cstdint>
 
 #include "raster/edge.h"
@@ -38,7 +39,23 @@ struct PrimitiveSetup {
   bool aaPoint = false;
   Plane aaS, aaT;  // s and t times 1/w, as a perspective input
   float aaK = 0;
+  // GL_LINE_SMOOTH (raster/line.cpp): a triangle of the draw module's aaline
+  // stage, whose fragment shader scales alpha by the line's coverage,
+  // sat(coverageHalfWidth - |X|) * sat(coverageHalfLength - |Z|), X and Z
+  // perspective-correct like the colours (planes of X/w, Z/w; `w` is set).
+  bool lineCoverage = false;
+  Plane coverageX, coverageZ;
+  float coverageHalfWidth = 0, coverageHalfLength = 0;
 };
+
+// The aaline coverage factor of a fragment, `oow` being 1 / t.w there (both
+// shaders compute exactly this).
+inline float lineCoverageAt(const PrimitiveSetup& t, float px, float py, float oow) {
+  auto saturate = [](float v) { return std::fmin(std::fmax(v, 0.0f), 1.0f); };
+  const float across = saturate(t.coverageHalfWidth - std::fabs(t.coverageX.at(px, py) * oow));
+  const float along = saturate(t.coverageHalfLength - std::fabs(t.coverageZ.at(px, py) * oow));
+  return across * along;
+}
 
 // The framebuffer as the span shaders see it.
 struct ShadeTarget {

@@ -102,6 +102,11 @@ struct LineStyle {
 void drawLine(const RasterState& state, Framebuffer& fb, const LineStyle& style, const WindowVertex& v1,
               const WindowVertex& v2, const float* flatVaryings);
 
+// One GL_LINE_SMOOTH line from v0 to v1 as the draw module's aaline stage
+// draws it (raster/line.cpp): two triangles whose alpha carries coverage.
+void drawSmoothLine(const RasterState& state, Framebuffer& fb, float width, const WindowVertex& v0,
+                    const WindowVertex& v1, const float* flatVaryings);
+
 // Float colour to 8 bits as llvmpipe's colour output does it: clamp to [0,1]
 // (NaN gives 0), then rint(v * 255) in single precision.
 inline uint8_t colorToUnorm8(float v) {

@@ -74,8 +74,10 @@ GLFIXED_AVX2 void shadePrimitiveAvx2(const PrimitiveSetup& t, const ShadeTarget&
   const bool anyColor = s.anyColor;
   const bool secondary = s.secondary;
   const bool flatPrimary = t.flatPrimary, flatSecondary = t.flatSecondary;
-  // Every colour flat: the same bytes for every fragment.
-  const bool isFlat = flatPrimary && (!secondary || flatSecondary);
+  // Every colour flat: the same bytes for every fragment (not under the
+  // coverage of a smooth line, which changes alpha).
+  const bool lineCoverage = t.lineCoverage;
+  const bool isFlat = flatPrimary && (!secondary || flatSecondary) && !lineCoverage;
   const int bpp = s.bytesPerPixel;
   const int offset[4] = {s.red, s.green, s.blue, s.alpha};
   const bool colorWrite[4] = {s.colorWrite[0], s.colorWrite[1], s.colorWrite[2], s.colorWrite[3]};
@@ -162,10 +164,24 @@ GLFIXED_AVX2 void shadePrimitiveAvx2(const PrimitiveSetup& t, const ShadeTarget&
       } else {
         const __m256 oow = _mm256_div_ps(_mm256_set1_ps(1.0f), planeAt(wPlane, fpx, fpy));
         __m256 c[4];
-        for (int k = 0; k < 4; ++k) c[k] = _mm256_mul_ps(planeAt(planes[k], fpx, fpy), oow);
+        for (int k = 0; k < 4; ++k)
+          c[k] = flatPrimary ? _mm256_set1_ps(t.flat[k]) : _mm256_mul_ps(planeAt(planes[k], fpx, fpy), oow);
+        // GL_LINE_SMOOTH: lineCoverageAt, eight lanes.
+        if (lineCoverage) {
+          const __m256 zero = _mm256_setzero_ps(), one = _mm256_set1_ps(1.0f);
+          const __m256 absMask = _mm256_castsi256_ps(_mm256_set1_epi32(0x7fffffff));
+          const __m256 x = _mm256_and_ps(_mm256_mul_ps(planeAt(t.coverageX, fpx, fpy), oow), absMask);
+          const __m256 z = _mm256_and_ps(_mm256_mul_ps(planeAt(t.coverageZ, fpx, fpy), oow), absMask);
+          __m256 across = _mm256_sub_ps(_mm256_set1_ps(t.coverageHalfWidth), x);
+          __m256 along = _mm256_sub_ps(_mm256_set1_ps(t.coverageHalfLength), z);
+          across = _mm256_min_ps(_mm256_max_ps(across, zero), one);
+          along = _mm256_min_ps(_mm256_max_ps(along, zero), one);
+          c[3] = _mm256_mul_ps(c[3], _mm256_mul_ps(across, along));
+        }
         if (secondary) {
           for (int k = 0; k < 3; ++k)
-            c[k] = _mm256_add_ps(c[k], _mm256_mul_ps(planeAt(planes[4 + k], fpx, fpy), oow));
+            c[k] = _mm256_add_ps(c[k], flatSecondary ? _mm256_set1_ps(t.flat[4 + k])
+                                                     : _mm256_mul_ps(planeAt(planes[4 + k], fpx, fpy), oow));
         }
         for (int k = 0; k < 4; ++k) bytes[k] = colorToUnormX8(c[k]);
       }

@@ -62,12 +62,14 @@ void shadeSpanScalar(const PrimitiveSetup& t, const ShadeTarget& s, int py, int 
     }
     if (!s.anyColor) continue;
     float c[kMaxVaryings] = {};
-    const bool smooth = !t.flatPrimary || (s.secondary && !t.flatSecondary);
+    const bool smooth = !t.flatPrimary || (s.secondary && !t.flatSecondary) || t.lineCoverage;
     const float oow = smooth ? 1.0f / t.w.at(fpx, fpy) : 0.0f;
     for (int k = 0; k < t.varyingCount; ++k) {
       const bool flat = k < 4 ? t.flatPrimary : t.flatSecondary;
       c[k] = flat ? t.flat[k] : t.varying[k].at(fpx, fpy) * oow;
     }
+    // GL_LINE_SMOOTH: the aaline stage's coverage scales alpha (lines only).
+    if (t.lineCoverage) c[3] = c[3] * lineCoverageAt(t, fpx, fpy, oow);
     if (s.secondary) {  // GL 2.1 §3.9: colour sum, rgb only
       c[0] += c[4];
       c[1] += c[5];

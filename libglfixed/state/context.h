@@ -109,6 +109,14 @@ class Context {
   } vbo;
   // Where Mesa's vertex buffer stands (pipeline/vbo_store.h); kept across flushes.
   pipeline::VboStore vboStore;
+  // Lines (primitive/lines.cpp): the draw module's stipple counter, which Mesa
+  // keeps from draw to draw (draw_pipe_stipple.c), and whether the next batch
+  // continues the previous one's strip (a long array draw drawn in chunks,
+  // pipeline/array_draw.cpp), so that it does not restart the pattern.
+  struct LineStippleCarry {
+    uint32_t counter = 0;
+    bool continues = false;
+  } lineStipple;
   // The primitives of consecutive glBegin/glEnd pairs Mesa would draw as one
   // (pipeline/immediate_mode.h); drawn when a state change flushes them.
   VertexBatch pending;

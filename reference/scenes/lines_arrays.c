@@ -1,10 +1,14 @@
 /* Every line mode through glDrawArrays and glDrawElements, flat (both
- * provoking-vertex conventions) and smooth, and a display list. */
+ * provoking-vertex conventions) and smooth, and a display list; a stippled
+ * strip and loop of 6000 vertices (Mesa splits the draw; the pattern carries
+ * on across the split). */
 #include "scene.h"
 
 #define N 12
 static GLfloat pos[N][2];
 static GLfloat col[N][3];
+#define LONG 6000
+static GLfloat longPos[LONG][2];
 
 static void fill(float y0)
 {
@@ -25,7 +29,7 @@ int main(int argc, char **argv)
     int m, s;
     float y = 2.0f;
     GLuint list;
-    scene_begin(argc, argv, 128, 224);
+    scene_begin(argc, argv, 128, 300);
     scene_ortho_pixels();
     glEnableClientState(GL_VERTEX_ARRAY);
     glEnableClientState(GL_COLOR_ARRAY);
@@ -58,5 +62,20 @@ int main(int argc, char **argv)
     glEndList();
     glDisableClientState(GL_COLOR_ARRAY);
     glCallList(list);
+
+    glDisableClientState(GL_COLOR_ARRAY);
+    glVertexPointer(2, GL_FLOAT, 0, longPos);
+    glEnable(GL_LINE_STIPPLE);
+    glLineStipple(1, 0x0f0f);
+    for (m = 0; m < LONG; m++) {
+        int row = m / 200, col = m % 200;
+        longPos[m][0] = 2.0f + 0.6f * (float)col + (row & 1 ? 0.3f : 0.0f);
+        longPos[m][1] = 230.5f + 2.1f * (float)row + (col & 1 ? 0.6f : 0.0f);
+    }
+    glColor3f(1, 1, 1);
+    glDrawArrays(GL_LINE_STRIP, 0, LONG);
+    glTranslatef(0.3f, 1.05f, 0.0f);
+    glColor3f(1, 0.5f, 0);
+    glDrawArrays(GL_LINE_LOOP, 500, LONG - 1000);
     return scene_end();
 }

@@ -1,6 +1,8 @@
 /* Lines crossing every frustum plane, smooth and flat colours across the cut,
  * lines far outside and lines whose ends are both outside but which cross the
- * view; orthographic (x, y, near, far) and perspective (near, w < 0). */
+ * view; orthographic (x, y, near, far) and perspective (near, w < 0); stipple
+ * across the cut (the pattern starts at the clip point) and a strip whose
+ * first line is clipped away (the pattern carries on from the draw before). */
 #include "scene.h"
 
 static void line(float r0, float g0, float b0, float x0, float y0, float z0, float r1, float g1, float b1,
@@ -15,7 +17,8 @@ static void line(float r0, float g0, float b0, float x0, float y0, float z0, flo
 int main(int argc, char **argv)
 {
     int i;
-    scene_begin(argc, argv, 128, 128);
+    scene_begin(argc, argv, 128, 160);
+    glViewport(0, 0, 128, 128);
     glMatrixMode(GL_PROJECTION);
     glLoadIdentity();
     glOrtho(0, 128, 0, 128, -1, 1);
@@ -52,8 +55,41 @@ int main(int argc, char **argv)
     glEnd();
     glProvokingVertex(GL_LAST_VERTEX_CONVENTION);
 
+    /* stipple across the cut, in a band above */
+    glViewport(0, 128, 128, 32);
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glOrtho(0, 128, 0, 32, -1, 1);
+    glMatrixMode(GL_MODELVIEW);
+    glShadeModel(GL_SMOOTH);
+    glEnable(GL_LINE_STIPPLE);
+    glLineStipple(2, 0x0f3f);
+    glBegin(GL_LINES);
+    for (i = 0; i < 5; i++) {
+        float f = (float)i;
+        line(1, 0, 0, -30.0f - 7.0f * f, 1.5f + 2 * f, 0, 0, 1, 1, 140.0f + 3.0f * f, 2.5f + 2 * f, 0);
+    }
+    glEnd();
+    glLineStipple(1, 0x00ff);
+    glBegin(GL_LINES);
+    line(1, 1, 1, 0.5f, 12.5f, 0, 1, 1, 1, 5.5f, 12.5f, 0);
+    glEnd();
+    glBegin(GL_LINE_STRIP); /* first line wholly outside: no restart */
+    glColor3f(0, 1, 0); glVertex2f(-20.0f, 14.5f); glVertex2f(-10.0f, 14.5f);
+    glColor3f(1, 0, 1); glVertex2f(120.5f, 15.5f); glVertex2f(126.0f, 30.0f);
+    glEnd();
+    glLineWidth(3.0f);
+    glBegin(GL_LINE_LOOP);
+    glColor3f(1, 1, 0); glVertex2f(-40.0f, 20.0f);
+    glColor3f(0, 0, 1); glVertex2f(100.0f, 24.0f);
+    glColor3f(1, 0, 0); glVertex2f(80.0f, 60.0f);
+    glEnd();
+    glLineWidth(1.0f);
+    glDisable(GL_LINE_STIPPLE);
+
     /* perspective: lines through the near plane and behind the eye */
     glShadeModel(GL_SMOOTH);
+    glViewport(0, 0, 128, 128);
     glMatrixMode(GL_PROJECTION);
     glLoadIdentity();
     glFrustum(-1, 1, -1, 1, 1, 10);

@@ -65,5 +65,60 @@ TEST(Shade, Avx2MatchesScalar) {
   }
 }
 
+// Lines: the line set-up's quadrilaterals, and triangles carrying a smooth
+// line's coverage (flat and smooth colours).
+TEST(Shade, Avx2MatchesScalarForLines) {
+  if (!haveAvx2Fma()) GTEST_SKIP() << "no AVX2/FMA on this CPU";
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<float> pos(-4, 44), unit(0, 1);
+  for (int iter = 0; iter < 400; ++iter) {
+    TestSurface a(40, 40), b(40, 40);
+    RasterState st = a.state();
+    st.varyingCount = iter % 2 ? 8 : 4;
+    const bool flatColours = iter % 3 == 1;
+    for (int prim = 0; prim < 4; ++prim) {
+      WindowVertex v[3];
+      for (auto& x : v) {
+        x.x = pos(rng);
+        x.y = pos(rng);
+        x.z = unit(rng);
+        x.oneOverW = 0.2f + unit(rng);
+        for (float& c : x.varying) c = unit(rng);
+      }
+      const float* flat = flatColours ? v[1].varying : nullptr;
+      PrimitiveSetup t;
+      bool drawn;
+      if (iter % 2 == 0) {
+        LineStyle style;
+        style.width = 1.0f + 6.0f * unit(rng);
+        drawn = setupLine(st, a.fb, style, v[0], v[1], flat, t);
+      } else {
+        FixedTriangle f;
+        const int sign = snapTriangle(v[0], v[1], v[2], f);
+        if (sign < 0) {
+          std::swap(v[0], v[1]);
+          snapTriangle(v[0], v[1], v[2], f);
+        }
+        drawn = sign != 0 && setupTriangle(st, a.fb, f, v[0], v[1], v[2], flat, t);
+        if (drawn) {
+          const PlaneSetup ps(v[0].x, v[0].y, v[1].x, v[1].y, v[2].x, v[2].y);
+          t.w = ps.plane(v[0].oneOverW, v[1].oneOverW, v[2].oneOverW);
+          t.lineCoverage = true;
+          t.coverageHalfWidth = 1.0f + 2.0f * unit(rng);
+          t.coverageHalfLength = 10.0f * unit(rng);
+          t.coverageX = ps.plane(-t.coverageHalfWidth * v[0].oneOverW, t.coverageHalfWidth * v[1].oneOverW,
+                                 0.5f * v[2].oneOverW);
+          t.coverageZ = ps.plane(t.coverageHalfLength * v[0].oneOverW, -t.coverageHalfLength * v[1].oneOverW,
+                                 2.0f * v[2].oneOverW);
+        }
+      }
+      if (!drawn) continue;
+      shadePrimitiveScalar(t, makeShadeTarget(st, a.fb, t));
+      shadePrimitiveAvx2(t, makeShadeTarget(st, b.fb, t));
+    }
+    ASSERT_EQ(a.pixels, b.pixels) << "iteration " << iter;
+  }
+}
+
 }  // namespace
 }  // namespace glfixed::raster

@@ -65,13 +65,35 @@ void wrapBuffers(Context& ctx) {
       VertexBatch part;
       part.mode = b.mode;
       part.materials = b.materials;
-      part.appendVertices(b, 0, split.drawn);
+      // A line loop's piece is a strip, without the first vertex's copy
+      // once the loop has wrapped before.
+      const size_t from = b.mode == GL_LINE_LOOP && store.openLoopWrapped ? 1 : 0;
+      if (b.mode == GL_LINE_LOOP) part.mode = GL_LINE_STRIP;
+      part.appendVertices(b, from, split.drawn);
       drawBatch(ctx, part);
     }
-    if (split.keepFirst)
+    if (b.mode == GL_LINE_LOOP && store.openLoopWrapped) {
+      // vbo_copy_vertices on a later piece: it steps back to the first
+      // vertex's copy but keeps the piece's shortened count, so the second
+      // copy is the piece's second-to-last vertex, not its last (a Mesa
+      // defect that decides which segment follows: kept, the pixels depend
+      // on it).
+      // With only the copy left, nothing is kept: the next vertex becomes
+      // the one glEnd closes the loop with.
+      if (count >= 3) {
+        b.eraseVertices(count - 1, count);
+        b.eraseVertices(1, count - 2);
+      } else {
+        b.eraseVertices(count == 2 ? 1 : 0, count);
+      }
+    } else if (split.keepFirst) {
       b.eraseVertices(1, count - 1);
-    else
+    } else {
       b.eraseVertices(0, count - split.copied);
+    }
+    // The loop counts as wrapped (Mesa's begin marker 0) unless every vertex
+    // was copied (vbo_exec_wrap_buffers keeps the marker then).
+    if (b.mode == GL_LINE_LOOP && b.size() != count) store.openLoopWrapped = true;
     dropUnusedMaterials(b);
   }
   store.flushed(ctx.vbo.vertexFloats());
@@ -109,11 +131,27 @@ void drawPending(Context& ctx) {
 void beginPrimitive(Context& ctx, GLenum mode) {
   ctx.batch.reset(mode, ctx.lighting.material);
   ++ctx.vboStore.primCount;
+  ctx.vboStore.openLoopWrapped = false;
 }
 
 void endPrimitive(Context& ctx) {
   VertexBatch& b = ctx.batch;
   VboStore& store = ctx.vboStore;
+  if (b.mode == GL_LINE_LOOP && store.openLoopWrapped) {
+    // _mesa_End: the rest of a wrapped loop is a strip from the vertex after
+    // the first one's copy, closed by that copy appended at the end (one
+    // more vertex in the buffer).
+    store.openLoopWrapped = false;
+    VertexBatch strip;
+    strip.mode = GL_LINE_STRIP;
+    strip.materials = b.materials;
+    if (b.size() > 0) {
+      strip.appendVertices(b, 1, b.size());
+      strip.appendVertices(b, 0, 1);
+      ++store.vertexCount;
+    }
+    std::swap(b, strip);
+  }
   const uint32_t count = static_cast<uint32_t>(b.size());
   const GLenum mode = primitive::mesaConvertedMode(b.mode, count);
   // vbo_merge_draws looks at the previous primitive's whole vertex count,

@@ -38,6 +38,11 @@ struct VboStore {
   uint32_t runFirstCount = 0;  // the run's first primitive's vertices, merges included
   uint32_t runDraws = 0;       // primitives in the run, after merging
   bool runSuppressed() const { return runIndex > 0 && runFirstCount == 0; }
+  // The open GL_LINE_LOOP has wrapped (Mesa's begin marker is 0): its batch
+  // starts with the copy of the loop's first vertex. Each later piece is
+  // drawn as a line strip without that copy, and glEnd draws the rest as a
+  // strip with the first vertex appended (vbo_exec_wrap_buffers, _mesa_End).
+  bool openLoopWrapped = false;
 
   uint32_t maxVertices(uint32_t vertexFloats) const {
     if (vertexFloats == 0) return 0;
@@ -69,7 +74,7 @@ inline WrapSplit wrapSplit(GLenum mode, uint32_t count) {
     case GL_TRIANGLES: s.copied = count % 3; break;
     case GL_QUADS: s.copied = count % 4; break;
     case GL_LINE_STRIP: s.copied = count < 1 ? count : 1; break;
-    case GL_LINE_LOOP:  // (Mesa draws the piece as a line strip; lines are not drawn yet)
+    case GL_LINE_LOOP:  // the piece is drawn as a line strip (VboStore::openLoopWrapped)
     case GL_TRIANGLE_FAN:
     case GL_POLYGON:
       s.copied = count < 2 ? count : 2;

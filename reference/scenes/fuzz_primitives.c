@@ -15,7 +15,7 @@
 #define FUZZ_DEFAULT_SEED 3u
 
 static int fz_smooth;
-static int fz_prim_ops = 14;   /* GLFX_FUZZ_PRIM_OPS=n: only the first n kinds of primitive_state_op */
+static int fz_prim_ops = 4;   /* GLFX_FUZZ_PRIM_OPS=n: only the first n kinds of primitive_state_op (default: sizes and line stipple, until the other stages land) */
 static const GLenum all_prims[] = { GL_POINTS, GL_LINES, GL_LINE_STRIP, GL_LINE_LOOP, GL_TRIANGLES,
                                     GL_TRIANGLE_STRIP, GL_TRIANGLE_FAN, GL_QUADS, GL_QUAD_STRIP, GL_POLYGON };
 
@@ -116,7 +116,7 @@ int main(int argc, char **argv)
 {
     int nops, i;
     fz_smooth = env_int("GLFX_FUZZ_SMOOTH", 0);
-    fz_prim_ops = env_int("GLFX_FUZZ_PRIM_OPS", 14);
+    fz_prim_ops = env_int("GLFX_FUZZ_PRIM_OPS", 4);
     nops = fuzz_begin(argc, argv, FUZZ_DEFAULT_SEED);
     for (i = 0; i < nops; i++) {
         int k = fz_int(100);

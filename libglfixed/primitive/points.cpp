@@ -15,10 +15,8 @@ namespace glfixed::primitive {
 
 void drawPointBatch(BatchContext& b, uint32_t n, const std::vector<ClipVertex>& vertices,
                     const std::vector<uint32_t>& masks) {
-  for (uint32_t i = 0; i < n; ++i) {
-    b.pipeline = masks[i] != 0 || b.state.fetchedVertexOutside;
+  for (uint32_t i = 0; i < n; ++i)
     if (masks[i] == 0) emitPoint(b, vertices[i]);
-  }
 }
 
 void emitPoint(const BatchContext& b, const ClipVertex& v) {

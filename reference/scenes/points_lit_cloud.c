@@ -1,7 +1,8 @@
 /* A lit point cloud in perspective: points on spheres and in a random cloud,
  * several fractional sizes (1, 1.5, 2.5, 2.51, 3.5, 4, 6.49), flat and smooth
  * shading, two lights (one positional), separate specular on part of it,
- * depth test on, so nearer points hide farther ones. */
+ * depth test on, so nearer points hide farther ones; two-sided lighting and
+ * smooth (antialiased) lit points with separate specular. */
 #include <math.h>
 
 #include "light_common.h"
@@ -75,6 +76,19 @@ int main(int argc, char **argv)
     }
     glEnd();
     glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_FALSE);
+
+    /* Smooth (antialiased) lit points with separate specular: the coverage
+     * factor scales the alpha of the summed colour. */
+    glEnable(GL_POINT_SMOOTH);
+    glLightModeli(GL_LIGHT_MODEL_COLOR_CONTROL, GL_SEPARATE_SPECULAR_COLOR);
+    light_mat(GL_FRONT_AND_BACK, GL_DIFFUSE, 0.7f, 0.6f, 0.5f, 0.6f);
+    for (int k = 0; k < 4; ++k) {
+        glPointSize(2.0f + 2.5f * (float)k);
+        glShadeModel((k & 1) ? GL_FLAT : GL_SMOOTH);
+        sphere_points(-1.8f + 1.2f * (float)k, 0.0f, 1.0f, 0.4f, 5, 10);
+    }
+    glDisable(GL_POINT_SMOOTH);
+    glLightModeli(GL_LIGHT_MODEL_COLOR_CONTROL, GL_SINGLE_COLOR);
 
     /* Unlit points with per-vertex colours, behind and in front of the rest. */
     glDisable(GL_LIGHTING);

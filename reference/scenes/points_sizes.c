@@ -68,6 +68,21 @@ int main(int argc, char **argv)
     point(5.0f, -1e30f, 10.0f, 1, 0, 0);
     point(5.0f, NAN, 10.0f, 1, 0, 0);
 
+    /* A viewport past the buffer's bottom-left corner: centres at negative
+     * window coordinates (inside the view, outside the buffer; the snap's
+     * ties go away from zero there too) spill into the buffer. */
+    glViewport(-40, -40, 128, 128);
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glOrtho(-40.0, 88.0, -40.0, 88.0, -1.0, 1.0);
+    glMatrixMode(GL_MODELVIEW);
+    point(10.0f, -2.5f, 10.0f, 0.7f, 0.2f, 0.9f);
+    point(9.0f, -3.998046875f, 20.0f, 0.2f, 0.9f, 0.7f);
+    point(10.0f, -4.001953125f, 30.0f, 0.9f, 0.9f, 0.2f);
+    point(8.0f, 20.0f, -2.001953125f, 0.4f, 0.4f, 0.9f);
+    point(7.0f, 30.0f, -2.998046875f, 0.9f, 0.4f, 0.4f);
+    point(12.0f, -5.0f, -5.0f, 0.5f, 0.9f, 0.9f);
+
     /* The full view again: a 1e30 point (clamped to 255) drawn behind by depth. */
     glViewport(0, 0, 256, 256);
     scene_ortho_pixels();

@@ -6,6 +6,7 @@
 #include "api/list_record.h"
 #include "api/list_record.h"
 #include "api/normalized.h"
+#include "pipeline/immediate_mode.h"
 
 using namespace glfixed;
 
@@ -145,7 +146,10 @@ GLAPI void APIENTRY glIndexubv(const GLubyte* c) { if (c) colorIndex(static_cast
 GLAPI void APIENTRY glEdgeFlag(GLboolean flag) {
   if (api::compiledAttribute(&glEdgeFlag, flag)) return;
   Context* ctx = currentContext();
-  if (ctx) ctx->current.edgeFlag = flag != GL_FALSE;
+  if (!ctx) return;
+  // A vertex attribute of Mesa's vbo: it grows the vertex format like glNormal.
+  if (ctx->insideBeginEnd || ctx->vbo.verticesBuffered) pipeline::edgeFlagBecomesVertexData(*ctx);
+  ctx->current.edgeFlag = flag != GL_FALSE;
 }
 GLAPI void APIENTRY glEdgeFlagv(const GLboolean* flag) {
   if (flag) glEdgeFlag(*flag);

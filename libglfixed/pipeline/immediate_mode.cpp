@@ -212,6 +212,13 @@ void normalBecomesVertexData(Context& ctx) {
   if (ctx.vbo.normalIsVertexData) return;
   growVertexFormat(ctx, true, [](Context::VboFormat& f) { f.normalIsVertexData = true; });
 }
+// glEdgeFlag is a vertex attribute of Mesa's vbo like glNormal
+// (VBO_ATTRIB_EDGEFLAG): its first call inside glBegin/glEnd wraps the open
+// primitive (scene lines_edge_flag_wraps).
+void edgeFlagBecomesVertexData(Context& ctx) {
+  if (ctx.vbo.edgeFlagIsVertexData) return;
+  growVertexFormat(ctx, true, [](Context::VboFormat& f) { f.edgeFlagIsVertexData = true; });
+}
 void positionGrows(Context& ctx, int size) {
   if (ctx.vbo.positionSize >= size) return;
   growVertexFormat(ctx, ctx.vbo.positionSize == 0, [size](Context::VboFormat& f) { f.positionSize = size; });

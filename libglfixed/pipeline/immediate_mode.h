@@ -38,6 +38,7 @@ void flushVertices(Context& ctx);
 void colorBecomesVertexData(Context& ctx, int size);
 // The same for the normal (glNormal): it grows the vbo's vertex format too.
 void normalBecomesVertexData(Context& ctx);
+void edgeFlagBecomesVertexData(Context& ctx);
 // And for the position: a glVertex3 after glVertex2 calls grows it.
 void positionGrows(Context& ctx, int size);
 // And for glMaterial: `attributes` are the material components the call sets

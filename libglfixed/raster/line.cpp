@@ -212,6 +212,9 @@ bool setupLine(const RasterState& state, const Framebuffer& fb, const LineStyle&
   int32_t x[4], y[4];
   if (style.rectangular) {
     const float scale = (style.width * 0.5f) / std::sqrt(area);
+    // (A half-width beyond a million pixels cannot come from a clamped width;
+    // refusing it keeps the fixed-point sums below in range.)
+    if (!(std::fabs(dx * scale) < 1e6f && std::fabs(dy * scale) < 1e6f)) return false;
     const int32_t tx = subpixelSnap(-dy * scale);
     const int32_t ty = subpixelSnap(+dx * scale);
     const int32_t x1 = subpixelSnap(v1.x - 0.5f), x2 = subpixelSnap(v2.x - 0.5f);

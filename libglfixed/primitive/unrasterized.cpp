@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "primitive/assemble.h"
+#include "primitive/clip_line.h"
 #include "primitive/cull.h"
 #include "primitive/viewport.h"
 #include "state/lighting_attrib.h"
@@ -102,15 +103,10 @@ void emitLine(const Batch& b, const ClipVertex& v0, const ClipVertex& v1, uint32
   if ((m0 & m1) != 0) return;
   ClipVertex made[2];
   const ClipVertex *e0, *e1;
-  if (!clipLine(v0, v1, m0 | m1, kAttribCount, b.viewport, made, &e0, &e1)) return;
   // GL_FLAT: a clipped end takes the provoking vertex's colours.
-  if (b.state.flat) {
-    const ClipVertex& provoking = b.state.firstVertexConvention ? v0 : v1;
-    const bool clipped[2] = {m0 != 0, m1 != 0};
-    for (int i = 0; i < 2; ++i)
-      if (clipped[i])
-        for (int k = 0; k < kAttribCount; ++k) made[i].attr[k] = provoking.attr[k];
-  }
+  const ClipVertex& provoking = b.state.firstVertexConvention ? v0 : v1;
+  if (!clipLine(v0, v1, m0, m1, m0 | m1, kAttribCount, b.viewport, b.state.flat, provoking, made, &e0, &e1))
+    return;
   b.sink.line(*e0, *e1);
 }
 
@@ -132,39 +128,6 @@ void drawLines(const Batch& b, GLenum mode, uint32_t n, const std::vector<ClipVe
 }
 
 }  // namespace
-
-bool clipLine(const ClipVertex& v0, const ClipVertex& v1, uint32_t planes, int attribCount,
-              const ViewportTransform& viewport, ClipVertex made[2], const ClipVertex** out0,
-              const ClipVertex** out1) {
-  float t0 = 0.0f, t1 = 0.0f;
-  while (planes != 0) {
-    const int plane = __builtin_ctz(planes);
-    planes &= planes - 1;
-    const float dp0 = distanceToPlane(plane, v0.clip);
-    const float dp1 = distanceToPlane(plane, v1.clip);
-    if (!std::isfinite(dp0) || !std::isfinite(dp1)) return false;
-    if (dp1 < 0.0f) {
-      const float t = dp1 / (dp1 - dp0);
-      if (t > t1) t1 = t;
-    }
-    if (dp0 < 0.0f) {
-      const float t = dp0 / (dp0 - dp1);
-      if (t > t0) t0 = t;
-    }
-    if (t0 + t1 >= 1.0f) return false;
-  }
-  *out0 = &v0;
-  *out1 = &v1;
-  if (clipMask(v0.clip) != 0) {
-    interpolateClipVertex(v0, v1, t0, attribCount, viewport, made[0]);
-    *out0 = &made[0];
-  }
-  if (clipMask(v1.clip) != 0) {
-    interpolateClipVertex(v1, v0, t1, attribCount, viewport, made[1]);
-    *out1 = &made[1];
-  }
-  return true;
-}
 
 void drawUnrasterized(const PrimitiveState& state, const ShadedVertices& vertices, int framebufferHeight,
                       PrimitiveSink& sink) {

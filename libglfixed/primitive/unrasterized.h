@@ -41,12 +41,6 @@ class PrimitiveSink {
 void drawUnrasterized(const PrimitiveState& state, const ShadedVertices& vertices, int framebufferHeight,
                       PrimitiveSink& sink);
 
-// Line clipping as draw_pipe_clip.c does it (do_clip_line): for each plane
-// some end is outside, t0/t1 grow to the largest fraction cut off at each
-// end; the line is dropped once t0 + t1 >= 1. Returns false when nothing is
-// left; else `out0`/`out1` point at the ends (the inputs or `made`).
-bool clipLine(const ClipVertex& v0, const ClipVertex& v1, uint32_t planes, int attribCount,
-              const ViewportTransform& viewport, ClipVertex made[2], const ClipVertex** out0,
-              const ClipVertex** out1);
+// Lines are clipped as when they are drawn (clip_line.h).
 
 }  // namespace glfixed::primitive

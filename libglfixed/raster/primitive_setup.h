@@ -46,6 +46,7 @@ struct PrimitiveSetup {
   bool lineCoverage = false;
   Plane coverageX, coverageZ;
   float coverageHalfWidth = 0, coverageHalfLength = 0;
+  float coverageAlongScale = 1;  // lines shorter than a pixel: measured, see line.cpp
 };
 
 // The aaline coverage factor of a fragment, `oow` being 1 / t.w there (both
@@ -54,7 +55,7 @@ inline float lineCoverageAt(const PrimitiveSetup& t, float px, float py, float o
   auto saturate = [](float v) { return std::fmin(std::fmax(v, 0.0f), 1.0f); };
   const float across = saturate(t.coverageHalfWidth - std::fabs(t.coverageX.at(px, py) * oow));
   const float along = saturate(t.coverageHalfLength - std::fabs(t.coverageZ.at(px, py) * oow));
-  return across * along;
+  return across * (along * t.coverageAlongScale);
 }
 
 // The framebuffer as the span shaders see it.

@@ -176,6 +176,7 @@ GLFIXED_AVX2 void shadePrimitiveAvx2(const PrimitiveSetup& t, const ShadeTarget&
           __m256 along = _mm256_sub_ps(_mm256_set1_ps(t.coverageHalfLength), z);
           across = _mm256_min_ps(_mm256_max_ps(across, zero), one);
           along = _mm256_min_ps(_mm256_max_ps(along, zero), one);
+          along = _mm256_mul_ps(along, _mm256_set1_ps(t.coverageAlongScale));
           c[3] = _mm256_mul_ps(c[3], _mm256_mul_ps(across, along));
         }
         if (secondary) {

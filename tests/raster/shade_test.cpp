@@ -106,6 +106,7 @@ TEST(Shade, Avx2MatchesScalarForLines) {
           t.lineCoverage = true;
           t.coverageHalfWidth = 1.0f + 2.0f * unit(rng);
           t.coverageHalfLength = 10.0f * unit(rng);
+          t.coverageAlongScale = iter % 4 == 1 ? unit(rng) : 1.0f;
           t.coverageX = ps.plane(-t.coverageHalfWidth * v[0].oneOverW, t.coverageHalfWidth * v[1].oneOverW,
                                  0.5f * v[2].oneOverW);
           t.coverageZ = ps.plane(t.coverageHalfLength * v[0].oneOverW, -t.coverageHalfLength * v[1].oneOverW,

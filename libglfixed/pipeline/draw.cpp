@@ -6,11 +6,27 @@
 #include "primitive/primitive.h"
 #include "primitive/select_feedback.h"
 #include "state/context.h"
+#include "vertex/lighting_matrix.h"
 #include "vertex/vertex_stage.h"
 
 namespace glfixed::pipeline {
 
 namespace {
+
+// Clip planes and scissor: the enabled user clip planes in clip space, as
+// Mesa keeps them (_ClipUserPlane: the eye-space plane times its inverse of
+// the current projection, recomputed whenever the projection changes).
+primitive::UserClipPlanes userClipPlanes(const Context& ctx) {
+  primitive::UserClipPlanes u;
+  for (int i = 0; i < kMaxClipPlanes; ++i)
+    if (ctx.transform.clipPlaneEnabled[i]) u.enabled |= 1u << i;
+  if (u.enabled == 0) return u;
+  const glm::mat4 eyeFromClip = vertex::analyseModelview(ctx.projection.top()).inverse;
+  for (int i = 0; i < kMaxClipPlanes; ++i)
+    if (u.enabled & (1u << i))
+      u.plane[i] = primitive::transformPlane(ctx.transform.clipPlane[i], eyeFromClip);
+  return u;
+}
 
 primitive::PrimitiveState primitiveState(const Context& ctx, GLenum mode, bool separateSpecular) {
   primitive::PrimitiveState s;
@@ -38,6 +54,17 @@ primitive::PrimitiveState primitiveState(const Context& ctx, GLenum mode, bool s
   r.scissorY0 = std::max(0, ctx.viewport.y);
   r.scissorX1 = std::min(ctx.framebuffer.width(), ctx.viewport.x + ctx.viewport.width);
   r.scissorY1 = std::min(ctx.framebuffer.height(), ctx.viewport.y + ctx.viewport.height);
+  // Clip planes and scissor: with GL_SCISSOR_TEST the box is cut to the
+  // scissor box too (§4.1.2; llvmpipe's draw regions, st_atom_scissor.c).
+  if (ctx.scissor.test) {
+    const ScissorAttrib& sc = ctx.scissor;
+    r.scissorX0 = std::max(r.scissorX0, sc.x);
+    r.scissorY0 = std::max(r.scissorY0, sc.y);
+    r.scissorX1 = static_cast<int>(std::min<long long>(r.scissorX1, static_cast<long long>(sc.x) + sc.width));
+    r.scissorY1 =
+        static_cast<int>(std::min<long long>(r.scissorY1, static_cast<long long>(sc.y) + sc.height));
+  }
+  s.userClipPlanes = userClipPlanes(ctx);
   return s;
 }
 
@@ -71,8 +98,9 @@ bool anyVertexOutside(Context& ctx, const VertexBatch& batch) {
   const vertex::VertexState& vs = ctx.validate();
   static thread_local ShadedVertices shaded;
   vertex::shadeBatch(vs, batch, shaded);
+  const primitive::UserClipPlanes user = userClipPlanes(ctx);  // clip planes: outside one counts
   for (const glm::vec4& c : shaded.clip)
-    if (primitive::clipMask(c) != 0) return true;
+    if (primitive::clipMask(c, user) != 0) return true;
   return false;
 }
 

@@ -6,6 +6,7 @@
 
 #include "framebuffer/framebuffer.h"
 #include "pipeline/vertex_batch.h"
+#include "primitive/clip.h"
 #include "raster/raster.h"
 
 namespace glfixed::primitive {
@@ -43,6 +44,9 @@ struct PrimitiveState {
   // fetches its whole index range: pipeline/array_draw.cpp).
   bool fetchedVertexOutside = false;
   bool constantSecondary = false;
+  // Clip planes and scissor: the enabled user clip planes (§2.12) in clip
+  // space, the eye-space planes times the inverse projection (clip.h).
+  UserClipPlanes userClipPlanes;
   raster::RasterState raster;  // depth test, scissor to the viewport, ...
 };
 

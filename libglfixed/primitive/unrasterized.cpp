@@ -27,13 +27,13 @@ struct Batch {
 };
 
 void loadVertices(const ShadedVertices& in, uint32_t n, const ViewportTransform& viewport,
-                  std::vector<ClipVertex>& out, std::vector<uint32_t>& masks) {
+                  const UserClipPlanes& user, std::vector<ClipVertex>& out, std::vector<uint32_t>& masks) {
   out.resize(n);
   masks.resize(n);
   for (uint32_t i = 0; i < n; ++i) {
     ClipVertex& v = out[i];
     v.clip = in.clip[i];
-    masks[i] = clipMask(v.clip);
+    masks[i] = clipMask(v.clip, user);  // user clip planes: bits 6..13
     viewport.windowFromClip(v.clip, v.window);
     const glm::vec4& front = in.primary[kFront][i];
     const glm::vec4& back = in.hasBack ? in.primary[kBack][i] : front;
@@ -88,7 +88,8 @@ void drawTriangles(const Batch& b, GLenum mode, uint32_t n, const std::vector<Cl
     if ((m0 | m1 | m2) == 0) {
       emitTriangle(b, v[t[0]], v[t[1]], v[t[2]]);
     } else if ((m0 & m1 & m2) == 0) {
-      if (clipTriangle(v[t[0]], v[t[1]], v[t[2]], m0 | m1 | m2, kAttribCount, b.viewport, polygon))
+      if (clipTriangle(v[t[0]], v[t[1]], v[t[2]], m0 | m1 | m2, kAttribCount, b.viewport, polygon,
+                       b.state.userClipPlanes))
         emitClippedPolygon(b, polygon, v[t[provokingSlot]]);
     }
   }
@@ -102,7 +103,7 @@ void emitLine(const Batch& b, const ClipVertex& v0, const ClipVertex& v1, uint32
   if ((m0 & m1) != 0) return;
   ClipVertex made[2];
   const ClipVertex *e0, *e1;
-  if (!clipLine(v0, v1, m0 | m1, kAttribCount, b.viewport, made, &e0, &e1)) return;
+  if (!clipLine(v0, v1, m0 | m1, kAttribCount, b.viewport, made, &e0, &e1, b.state.userClipPlanes)) return;
   // GL_FLAT: a clipped end takes the provoking vertex's colours.
   if (b.state.flat) {
     const ClipVertex& provoking = b.state.firstVertexConvention ? v0 : v1;
@@ -135,13 +136,13 @@ void drawLines(const Batch& b, GLenum mode, uint32_t n, const std::vector<ClipVe
 
 bool clipLine(const ClipVertex& v0, const ClipVertex& v1, uint32_t planes, int attribCount,
               const ViewportTransform& viewport, ClipVertex made[2], const ClipVertex** out0,
-              const ClipVertex** out1) {
+              const ClipVertex** out1, const UserClipPlanes& user) {
   float t0 = 0.0f, t1 = 0.0f;
   while (planes != 0) {
     const int plane = __builtin_ctz(planes);
     planes &= planes - 1;
-    const float dp0 = distanceToPlane(plane, v0.clip);
-    const float dp1 = distanceToPlane(plane, v1.clip);
+    const float dp0 = distanceToPlane(plane, v0.clip, user);
+    const float dp1 = distanceToPlane(plane, v1.clip, user);
     if (!std::isfinite(dp0) || !std::isfinite(dp1)) return false;
     if (dp1 < 0.0f) {
       const float t = dp1 / (dp1 - dp0);
@@ -155,11 +156,11 @@ bool clipLine(const ClipVertex& v0, const ClipVertex& v1, uint32_t planes, int a
   }
   *out0 = &v0;
   *out1 = &v1;
-  if (clipMask(v0.clip) != 0) {
+  if (clipMask(v0.clip, user) != 0) {
     interpolateClipVertex(v0, v1, t0, attribCount, viewport, made[0]);
     *out0 = &made[0];
   }
-  if (clipMask(v1.clip) != 0) {
+  if (clipMask(v1.clip, user) != 0) {
     interpolateClipVertex(v1, v0, t1, attribCount, viewport, made[1]);
     *out1 = &made[1];
   }
@@ -177,7 +178,7 @@ void drawUnrasterized(const PrimitiveState& state, const ShadedVertices& vertice
 
   static thread_local std::vector<ClipVertex> clipVertices;
   static thread_local std::vector<uint32_t> masks;
-  loadVertices(vertices, n, b.viewport, clipVertices, masks);
+  loadVertices(vertices, n, b.viewport, state.userClipPlanes, clipVertices, masks);
 
   GLenum mode = state.mode;
   using Submission = PrimitiveState::Submission;

@@ -45,8 +45,9 @@ void drawUnrasterized(const PrimitiveState& state, const ShadedVertices& vertice
 // some end is outside, t0/t1 grow to the largest fraction cut off at each
 // end; the line is dropped once t0 + t1 >= 1. Returns false when nothing is
 // left; else `out0`/`out1` point at the ends (the inputs or `made`).
+// Planes 6.. are the user clip planes of `user`.
 bool clipLine(const ClipVertex& v0, const ClipVertex& v1, uint32_t planes, int attribCount,
               const ViewportTransform& viewport, ClipVertex made[2], const ClipVertex** out0,
-              const ClipVertex** out1);
+              const ClipVertex** out1, const UserClipPlanes& user = kNoUserClipPlanes);
 
 }  // namespace glfixed::primitive

@@ -84,6 +84,19 @@ int main(int argc, char **argv)
     glColor3f(0.9f, 0.5f, 0.1f);
     quad(10, 42, 60, 58, 0.6999999f);
     quad(70, 42, 120, 58, 0.7000001f);
+
+    /* A box covering the buffer clears directly: depth 1/3 is 0x555555
+       there (the quad clear gives 0x555554), which a quad at 1/3 matches
+       under GL_EQUAL. */
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(0, 0, 128, 96);
+    glClearDepth(1.0 / 3.0);
+    glClear(GL_DEPTH_BUFFER_BIT);
+    glDisable(GL_SCISSOR_TEST);
+    glDepthFunc(GL_EQUAL);
+    glColor3f(0.6f, 0.3f, 0.9f);
+    quad(10, 70, 118, 90, 1.0f / 3.0f);
+    glDepthFunc(GL_LESS);
     scene_readpixels_check();
     return scene_end();
 }

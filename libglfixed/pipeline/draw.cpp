@@ -54,15 +54,46 @@ primitive::PrimitiveState primitiveState(const Context& ctx, GLenum mode, bool s
   r.scissorY0 = std::max(0, ctx.viewport.y);
   r.scissorX1 = std::min(ctx.framebuffer.width(), ctx.viewport.x + ctx.viewport.width);
   r.scissorY1 = std::min(ctx.framebuffer.height(), ctx.viewport.y + ctx.viewport.height);
-  // Clip planes and scissor: with GL_SCISSOR_TEST the box is cut to the
-  // scissor box too (§4.1.2; llvmpipe's draw regions, st_atom_scissor.c).
+  // Points (primitive.h): the size as the state tracker clamps it, CLAMP(x,
+  // min, max) = x > min ? (x > max ? max : x) : min; per-vertex sizes under
+  // distance attenuation (the vertex stage computes them).
+  {
+    const PointAttrib& p = ctx.point;
+    s.pointSize = p.size > p.sizeMin ? (p.size > p.sizeMax ? p.sizeMax : p.size) : p.sizeMin;
+    const glm::vec3& a = p.distanceAttenuation;
+    s.pointSizePerVertex = a.x != 1.0f || a.y != 0.0f || a.z != 0.0f;
+    s.pointSmooth = p.smooth && !p.sprite;
+    s.pointRegionX1 = ctx.framebuffer.width();
+    s.pointRegionY1 = ctx.framebuffer.height();
+  }
+
+  // Lines (primitive/lines.cpp): Mesa's rasterizer state (st_atom_rasterizer.c).
+  // CLAMP turns NaN into the minimum.
+  s.lineWidth = ctx.line.width > 1.0f ? (ctx.line.width > 255.0f ? 255.0f : ctx.line.width) : 1.0f;
+  s.lineSmooth = ctx.line.smooth;
+  s.lineStipple = ctx.line.stipple && ctx.line.stipplePattern != 0xffff;
+  s.lineStippleFactor = ctx.line.stippleRepeat;
+  s.lineStipplePattern = ctx.line.stipplePattern;
+
+  // Clip planes and scissor: with GL_SCISSOR_TEST the drawable box of
+  // triangles, and the regions of points and lines (the buffer), are cut to
+  // the scissor box too (§4.1.2; llvmpipe's draw regions, st_atom_scissor.c).
   if (ctx.scissor.test) {
     const ScissorAttrib& sc = ctx.scissor;
+    const int x1 = static_cast<int>(std::min<long long>(1 << 30, static_cast<long long>(sc.x) + sc.width));
+    const int y1 = static_cast<int>(std::min<long long>(1 << 30, static_cast<long long>(sc.y) + sc.height));
     r.scissorX0 = std::max(r.scissorX0, sc.x);
     r.scissorY0 = std::max(r.scissorY0, sc.y);
-    r.scissorX1 = static_cast<int>(std::min<long long>(r.scissorX1, static_cast<long long>(sc.x) + sc.width));
-    r.scissorY1 =
-        static_cast<int>(std::min<long long>(r.scissorY1, static_cast<long long>(sc.y) + sc.height));
+    r.scissorX1 = std::min(r.scissorX1, x1);
+    r.scissorY1 = std::min(r.scissorY1, y1);
+    s.pointRegionX0 = std::max(s.pointRegionX0, sc.x);
+    s.pointRegionY0 = std::max(s.pointRegionY0, sc.y);
+    s.pointRegionX1 = std::min(s.pointRegionX1, x1);
+    s.pointRegionY1 = std::min(s.pointRegionY1, y1);
+    r.lineRegionX0 = std::max(r.lineRegionX0, sc.x);
+    r.lineRegionY0 = std::max(r.lineRegionY0, sc.y);
+    r.lineRegionX1 = std::min(r.lineRegionX1, x1);
+    r.lineRegionY1 = std::min(r.lineRegionY1, y1);
   }
   s.userClipPlanes = userClipPlanes(ctx);
   return s;

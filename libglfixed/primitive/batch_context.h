@@ -35,6 +35,10 @@ struct BatchContext {
   // llvmpipe's "uses constant interpolation": GL_FLAT with a colour the
   // fragment shader really reads as an input. It changes quad splits.
   bool flatInputs;
+  // Lines (lines.cpp): where the draw module's stipple stage stands along the
+  // lines drawn so far: each line adds its length in pixels rounded up
+  // (draw_pipe_stipple.c, an unsigned `counter`; scene lines_stipple).
+  mutable uint32_t lineStippleCounter = 0;
 };
 
 // A triangle leaving the clipper: the draw module's cull stage (pipeline
@@ -53,6 +57,10 @@ void drawPointBatch(BatchContext& b, uint32_t n, const std::vector<ClipVertex>& 
 // One clipped line segment in window space, to llvmpipe's line setup;
 // `provoking` gives its flat colour.
 void emitLine(const BatchContext& b, const ClipVertex& v0, const ClipVertex& v1, const ClipVertex& provoking);
+// Restarts the line stipple pattern (the draw module's
+// DRAW_PIPE_RESET_STIPPLE): at each GL_LINES line, at the first line of a
+// strip or loop, at each polygon's first edge.
+inline void resetLineStipple(const BatchContext& b) { b.lineStippleCounter = 0; }
 // One point whose centre survived clipping, to llvmpipe's point setup.
 void emitPoint(const BatchContext& b, const ClipVertex& v);
 

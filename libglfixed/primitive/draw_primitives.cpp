@@ -110,6 +110,7 @@ void loadVertices(const ShadedVertices& in, uint32_t n, const ViewportTransform&
       v.attr[kBackAttribs + k] = bp[k];
       v.attr[kBackAttribs + 4 + k] = bs[k];
     }
+    v.pointSize = in.hasPointSize ? in.pointSize[i] : 1.0f;  // points: per-vertex size
   }
 }
 

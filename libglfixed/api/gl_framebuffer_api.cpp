@@ -1,5 +1,6 @@
 // Whole-framebuffer operations: glClear (GL 2.1 §4.2.3), glReadPixels (§4.3.2)
 // and glPixelStore (§3.6.1).
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -7,10 +8,37 @@
 #include "api/api.h"
 #include "api/list_record.h"
 #include "framebuffer/read_pixels.h"
+#include "raster/depth.h"
 
 using namespace glfixed;
 
 namespace {
+
+// Clip planes and scissor: what glClear writes with GL_SCISSOR_TEST (§4.1.2,
+// §4.2.3). Mesa's st_Clear clears directly only when the scissor box covers
+// the whole buffer; otherwise it draws a quad over the box (clear_with_quad),
+// whose colour comes out as the direct clear's, but whose depth is the
+// vertex z (float)(d * 2 - 1), mapped by the viewport fma(z, 0.5, 0.5) and
+// converted as a fragment's depth (probed: 0.1 gives 0x199999, 1/3 0x555554).
+PixelBox clearBox(const Context& ctx, bool* byQuad) {
+  const Framebuffer& fb = ctx.framebuffer;
+  PixelBox box{0, 0, fb.width(), fb.height()};
+  const ScissorAttrib& s = ctx.scissor;
+  *byQuad = s.test && (s.x > 0 || s.y > 0 || static_cast<long long>(s.x) + s.width < fb.width() ||
+                       static_cast<long long>(s.y) + s.height < fb.height());
+  if (s.test) {
+    box.x0 = std::max(box.x0, s.x);
+    box.y0 = std::max(box.y0, s.y);
+    box.x1 = static_cast<int>(std::min<long long>(box.x1, static_cast<long long>(s.x) + s.width));
+    box.y1 = static_cast<int>(std::min<long long>(box.y1, static_cast<long long>(s.y) + s.height));
+  }
+  return box;
+}
+
+uint32_t quadClearDepth(double clearDepth, int bits) {
+  const float z = static_cast<float>(clearDepth * 2.0 - 1.0);
+  return raster::depthToUnorm(std::fma(z, 0.5f, 0.5f), bits);
+}
 
 // Mesa's glPixelStoref rounds with lroundf (halves away from zero) and keeps
 // the low 32 bits of the long: NaN, infinities and anything past the long's
@@ -36,9 +64,15 @@ GLAPI void APIENTRY glClear(GLbitfield mask) {
   }
   Framebuffer& fb = ctx->framebuffer;
   if (!fb.bound()) return;
-  if (mask & GL_COLOR_BUFFER_BIT) clearColor(fb, ctx->colorBuffer);
-  if ((mask & GL_DEPTH_BUFFER_BIT) && ctx->depth.writeMask && fb.depth.bits() > 0)
-    fb.depth.fill(depthToUnorm(ctx->depth.clearDepth, fb.depth.bits()));
+  bool byQuad = false;
+  const PixelBox box = clearBox(*ctx, &byQuad);
+  if (mask & GL_COLOR_BUFFER_BIT) clearColor(fb, ctx->colorBuffer, box);
+  if ((mask & GL_DEPTH_BUFFER_BIT) && ctx->depth.writeMask && fb.depth.bits() > 0) {
+    if (byQuad)
+      clearDepth(fb, quadClearDepth(ctx->depth.clearDepth, fb.depth.bits()), box);
+    else
+      fb.depth.fill(depthToUnorm(ctx->depth.clearDepth, fb.depth.bits()));
+  }
 }
 
 GLAPI void APIENTRY glReadPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum format, GLenum type,

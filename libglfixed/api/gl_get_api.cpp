@@ -275,6 +275,8 @@ bool queryCoreState(Context& ctx, GLenum pname, StateValue& out) {
     case GL_SELECTION_BUFFER_SIZE: out.set({double(ctx.renderMode.select.bufferSize)}); return true;
     case GL_FEEDBACK_BUFFER_SIZE: out.set({double(ctx.renderMode.feedback.bufferSize)}); return true;
     case GL_FEEDBACK_BUFFER_TYPE: out.set({double(ctx.renderMode.feedback.type)}); return true;
+    // Clip planes and scissor (§2.12; the box is answered with the held state above).
+    case GL_MAX_CLIP_PLANES: out.set({double(kMaxClipPlanes)}); return true;
     default:
       break;
   }

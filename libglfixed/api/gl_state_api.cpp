@@ -93,6 +93,22 @@ GLAPI void APIENTRY glViewport(GLint x, GLint y, GLsizei width, GLsizei height) 
   api::setState(*ctx, ctx->viewport, v, GL_VIEWPORT_BIT);
 }
 
+// Clip planes and scissor: the scissor box (GL 2.1 §4.1.2), stored as given;
+// only a change flushes (Mesa's _mesa_set_scissor).
+GLAPI void APIENTRY glScissor(GLint x, GLint y, GLsizei width, GLsizei height) {
+  if (api::compiled(&glScissor, x, y, width, height)) return;
+  Context* ctx = api::contextForSetter();
+  if (!ctx) return;
+  if (width < 0 || height < 0) return ctx->recordError(GL_INVALID_VALUE);
+  ScissorAttrib& s = ctx->scissor;
+  if (s.x == x && s.y == y && s.width == width && s.height == height) return;
+  api::beginStateChange(*ctx, GL_SCISSOR_BIT);
+  s.x = x;
+  s.y = y;
+  s.width = width;
+  s.height = height;
+}
+
 GLAPI void APIENTRY glDepthRange(GLclampd zNear, GLclampd zFar) {
   if (api::compiled(&glDepthRange, zNear, zFar)) return;
   Context* ctx = api::contextForSetter();

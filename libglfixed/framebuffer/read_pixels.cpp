@@ -6,13 +6,18 @@
 
 namespace glfixed {
 
-void clearColor(Framebuffer& fb, const ColorBufferAttrib& cb) {
+void clearDepth(Framebuffer& fb, uint32_t value, const PixelBox& box) {
+  for (int y = std::max(box.y0, 0); y < std::min(box.y1, fb.depth.height()); ++y)
+    for (int x = std::max(box.x0, 0); x < std::min(box.x1, fb.depth.width()); ++x) fb.depth.set(x, y, value);
+}
+
+void clearColor(Framebuffer& fb, const ColorBufferAttrib& cb, const PixelBox& box) {
   const ColorBuffer& c = fb.color;
   uint8_t value[4];
   for (int i = 0; i < 4; ++i) value[i] = floatToUnorm8(cb.clearColor[i]);
   const bool allChannels = cb.writeMask[0] && cb.writeMask[1] && cb.writeMask[2] && cb.writeMask[3];
-  for (int y = 0; y < c.height; ++y) {
-    for (int x = 0; x < c.width; ++x) {
+  for (int y = std::max(box.y0, 0); y < std::min(box.y1, c.height); ++y) {
+    for (int x = std::max(box.x0, 0); x < std::min(box.x1, c.width); ++x) {
       if (allChannels) {
         c.write(x, y, value);
         continue;

@@ -10,8 +10,16 @@
 
 namespace glfixed {
 
-// glClear of the colour buffer: the whole buffer, honouring the colour write mask.
-void clearColor(Framebuffer& fb, const ColorBufferAttrib& colorBuffer);
+// A box of pixels [x0, x1) x [y0, y1), GL window coordinates (y up).
+struct PixelBox {
+  int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+};
+
+// glClear of the colour buffer: the pixels of `box` (inside the buffer),
+// honouring the colour write mask.
+void clearColor(Framebuffer& fb, const ColorBufferAttrib& colorBuffer, const PixelBox& box);
+// glClear of the depth buffer: `value` into the pixels of `box`.
+void clearDepth(Framebuffer& fb, uint32_t value, const PixelBox& box);
 
 // glReadPixels (GL 2.1 §4.3.2): returns the GL error to record, or GL_NO_ERROR.
 // Pixels outside the framebuffer are left untouched in `pixels`.

@@ -6,11 +6,27 @@
 #include "primitive/primitive.h"
 #include "primitive/select_feedback.h"
 #include "state/context.h"
+#include "vertex/lighting_matrix.h"
 #include "vertex/vertex_stage.h"
 
 namespace glfixed::pipeline {
 
 namespace {
+
+// Clip planes and scissor: the enabled user clip planes in clip space, as
+// Mesa keeps them (_ClipUserPlane: the eye-space plane times its inverse of
+// the current projection, recomputed whenever the projection changes).
+primitive::UserClipPlanes userClipPlanes(const Context& ctx) {
+  primitive::UserClipPlanes u;
+  for (int i = 0; i < kMaxClipPlanes; ++i)
+    if (ctx.transform.clipPlaneEnabled[i]) u.enabled |= 1u << i;
+  if (u.enabled == 0) return u;
+  const glm::mat4 eyeFromClip = vertex::analyseModelview(ctx.projection.top()).inverse;
+  for (int i = 0; i < kMaxClipPlanes; ++i)
+    if (u.enabled & (1u << i))
+      u.plane[i] = primitive::transformPlane(ctx.transform.clipPlane[i], eyeFromClip);
+  return u;
+}
 
 primitive::PrimitiveState primitiveState(const Context& ctx, GLenum mode, bool separateSpecular) {
   primitive::PrimitiveState s;
@@ -59,6 +75,28 @@ primitive::PrimitiveState primitiveState(const Context& ctx, GLenum mode, bool s
   s.lineStippleFactor = ctx.line.stippleRepeat;
   s.lineStipplePattern = ctx.line.stipplePattern;
   s.lineStippleContinues = ctx.lineStipple.continues;
+
+  // Clip planes and scissor: with GL_SCISSOR_TEST the drawable box of
+  // triangles, and the regions of points and lines (the buffer), are cut to
+  // the scissor box too (§4.1.2; llvmpipe's draw regions, st_atom_scissor.c).
+  if (ctx.scissor.test) {
+    const ScissorAttrib& sc = ctx.scissor;
+    const int x1 = static_cast<int>(std::min<long long>(1 << 30, static_cast<long long>(sc.x) + sc.width));
+    const int y1 = static_cast<int>(std::min<long long>(1 << 30, static_cast<long long>(sc.y) + sc.height));
+    r.scissorX0 = std::max(r.scissorX0, sc.x);
+    r.scissorY0 = std::max(r.scissorY0, sc.y);
+    r.scissorX1 = std::min(r.scissorX1, x1);
+    r.scissorY1 = std::min(r.scissorY1, y1);
+    s.pointRegionX0 = std::max(s.pointRegionX0, sc.x);
+    s.pointRegionY0 = std::max(s.pointRegionY0, sc.y);
+    s.pointRegionX1 = std::min(s.pointRegionX1, x1);
+    s.pointRegionY1 = std::min(s.pointRegionY1, y1);
+    r.lineRegionX0 = std::max(r.lineRegionX0, sc.x);
+    r.lineRegionY0 = std::max(r.lineRegionY0, sc.y);
+    r.lineRegionX1 = std::min(r.lineRegionX1, x1);
+    r.lineRegionY1 = std::min(r.lineRegionY1, y1);
+  }
+  s.userClipPlanes = userClipPlanes(ctx);
   return s;
 }
 
@@ -93,8 +131,9 @@ bool anyVertexOutside(Context& ctx, const VertexBatch& batch) {
   const vertex::VertexState& vs = ctx.validate();
   static thread_local ShadedVertices shaded;
   vertex::shadeBatch(vs, batch, shaded);
+  const primitive::UserClipPlanes user = userClipPlanes(ctx);  // clip planes: outside one counts
   for (const glm::vec4& c : shaded.clip)
-    if (primitive::clipMask(c) != 0) return true;
+    if (primitive::clipMask(c, user) != 0) return true;
   return false;
 }
 

@@ -44,6 +44,32 @@ float distanceToBottom(const glm::vec4& c) { return dot4(c, 0, 1, 0, 1); }
 float distanceToNear(const glm::vec4& c) { return dot4(c, 0, 0, 1, 1); }
 float distanceToFar(const glm::vec4& c) { return dot4(c, 0, 0, -1, 1); }
 
+glm::vec4 transformPlane(const glm::vec4& v, const glm::mat4& m) {
+  glm::vec4 u;
+  for (int j = 0; j < 4; ++j) u[j] = ((v[0] * m[j][0] + v[1] * m[j][1]) + v[2] * m[j][2]) + v[3] * m[j][3];
+  return u;
+}
+
+uint32_t clipMask(const glm::vec4& c, const UserClipPlanes& user) {
+  uint32_t m = clipMask(c);
+  for (uint32_t planes = user.enabled; planes != 0; planes &= planes - 1) {
+    const int i = __builtin_ctz(planes);
+    const glm::vec4& p = user.plane[i];
+    float d = p.x * c.x;
+    d = std::fma(p.y, c.y, d);
+    d = std::fma(p.z, c.z, d);
+    d = std::fma(p.w, c.w, d);
+    if (!(0.0f <= d)) m |= 1u << (kFirstUserClipPlane + i);
+  }
+  return m;
+}
+
+float distanceToPlane(int plane, const glm::vec4& c, const UserClipPlanes& user) {
+  if (plane < kFirstUserClipPlane) return distanceToPlane(plane, c);
+  const glm::vec4& p = user.plane[plane - kFirstUserClipPlane];
+  return dot4(c, p.x, p.y, p.z, p.w);
+}
+
 float distanceToPlane(int plane, const glm::vec4& c) {
   switch (plane) {
     case 0: return distanceToRight(c);
@@ -71,7 +97,8 @@ void interpolateClipVertex(const ClipVertex& out, const ClipVertex& in, float t,
 }
 
 bool clipTriangle(const ClipVertex& v0, const ClipVertex& v1, const ClipVertex& v2, uint32_t planes,
-                  int attribCount, const ViewportTransform& viewport, ClippedPolygon& result) {
+                  int attribCount, const ViewportTransform& viewport, ClippedPolygon& result,
+                  const UserClipPlanes& user) {
   const ClipVertex* bufferA[kMaxClippedVertices + 1];
   const ClipVertex* bufferB[kMaxClippedVertices + 1];
   const ClipVertex** in = bufferA;
@@ -86,14 +113,14 @@ bool clipTriangle(const ClipVertex& v0, const ClipVertex& v1, const ClipVertex& 
     const int plane = __builtin_ctz(planes);
     planes &= planes - 1;
     const ClipVertex* prev = in[0];
-    float dpPrev = distanceToPlane(plane, prev->clip);
+    float dpPrev = distanceToPlane(plane, prev->clip, user);
     if (isInfOrNan(dpPrev)) return false;
     if (n >= kMaxClippedVertices) return false;
     in[n] = in[0];  // close the loop without rotating the vertices
     int outCount = 0;
     for (int i = 1; i <= n; ++i) {
       const ClipVertex* v = in[i];
-      const float dp = distanceToPlane(plane, v->clip);
+      const float dp = distanceToPlane(plane, v->clip, user);
       if (isInfOrNan(dp)) return false;
       bool crosses;
       if (dpPrev >= 0.0f) {

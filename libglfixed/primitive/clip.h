@@ -12,12 +12,42 @@
 //   - A NaN or infinite plane distance drops the whole triangle.
 //   - The clipped polygon is fanned from its first vertex (clipPolygonFan).
 //   - w <= 0 needs nothing special: such a vertex is outside some plane.
+// User clip planes (§2.12) come after the six, as planes 6..13 (bit 6 + i for
+// GL_CLIP_PLANEi), in clip space: Mesa's fixed-function vertex shader writes
+// no clip distance, the state tracker hands llvmpipe the eye-space plane
+// times the inverse projection (main/clip.c, _mesa_update_clip_plane;
+// st_atom_clip.c), and the draw module takes the distances from the clip
+// position:
+//   - the clip mask bit of a vertex: 0 > fma-chain dot product (generated
+//     code, draw_llvm.c generate_clipmask: p.x * c.x, then fused
+//     multiply-adds of y, z, w), unordered, so NaN is outside;
+//   - the distance the clipper uses (for every vertex, the ones it makes
+//     included): the plain C dot product, left to right, unfused
+//     (draw_pipe_clip.c, getclipdist). A vertex whose fused distance is
+//     below 0 and unfused one is 0 sends its draw through the pipeline but
+//     is not cut (probed).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <glm/glm.hpp>
 
 namespace glfixed::primitive {
+
+// The enabled user clip planes of a draw, in clip space.
+constexpr int kMaxUserClipPlanes = 8;
+constexpr int kFirstUserClipPlane = 6;  // clip mask bit of GL_CLIP_PLANE0
+struct UserClipPlanes {
+  uint32_t enabled = 0;  // bit i: GL_CLIP_PLANEi
+  std::array<glm::vec4, kMaxUserClipPlanes> plane{};
+};
+inline const UserClipPlanes kNoUserClipPlanes{};
+
+// Mesa's _mesa_transform_vector: the row vector `plane` times m, each
+// component summed left to right in float (m_matrix.c). glClipPlane maps a
+// plane to eye space with the inverse modelview; the draw maps it to clip
+// space with the inverse projection.
+glm::vec4 transformPlane(const glm::vec4& plane, const glm::mat4& m);
 
 // Colours carried through clipping: front primary, front secondary, back
 // primary, back secondary (RGBA each).
@@ -33,6 +63,8 @@ struct ClipVertex {
 // Bit i set: outside plane i (the order above). Comparisons as llvmpipe's
 // vertex shader makes them: unordered, so a NaN coordinate is outside all.
 uint32_t clipMask(const glm::vec4& clip);
+// The same with the bits of the enabled user clip planes (6 + i).
+uint32_t clipMask(const glm::vec4& clip, const UserClipPlanes& user);
 
 // Signed distances to the six planes as draw_pipe_clip.c computes them: a
 // float dot product with the plane, left to right. Inside: >= 0.
@@ -43,6 +75,8 @@ float distanceToBottom(const glm::vec4& c);  // plane 3: -w <= y
 float distanceToNear(const glm::vec4& c);    // plane 4: -w <= z
 float distanceToFar(const glm::vec4& c);     // plane 5: z <= w
 float distanceToPlane(int plane, const glm::vec4& c);
+// Planes 6.. are the user clip planes of `user` (the unfused dot product).
+float distanceToPlane(int plane, const glm::vec4& c, const UserClipPlanes& user);
 
 struct ViewportTransform;
 
@@ -64,9 +98,10 @@ void interpolateClipVertex(const ClipVertex& out, const ClipVertex& in, float t,
                            const struct ViewportTransform& viewport, ClipVertex& dst);
 
 // Clips triangle (v0, v1, v2) against every plane in `planes` (clip mask
-// bits). Returns false when nothing is left; else `result` holds a convex
-// polygon of 3 or more vertices.
+// bits; 6.. from `user`). Returns false when nothing is left; else `result`
+// holds a convex polygon of 3 or more vertices.
 bool clipTriangle(const ClipVertex& v0, const ClipVertex& v1, const ClipVertex& v2, uint32_t planes,
-                  int attribCount, const struct ViewportTransform& viewport, ClippedPolygon& result);
+                  int attribCount, const struct ViewportTransform& viewport, ClippedPolygon& result,
+                  const UserClipPlanes& user = kNoUserClipPlanes);
 
 }  // namespace glfixed::primitive

@@ -12,13 +12,14 @@ namespace glfixed::primitive {
 
 bool clipLine(const ClipVertex& v0, const ClipVertex& v1, uint32_t m0, uint32_t m1, uint32_t planes,
               int attribCount, const ViewportTransform& viewport, bool flat, const ClipVertex& provoking,
-              ClipVertex made[2], const ClipVertex** out0, const ClipVertex** out1) {
+              ClipVertex made[2], const ClipVertex** out0, const ClipVertex** out1,
+              const UserClipPlanes& user) {
   float t0 = 0.0f, t1 = 0.0f;
   while (planes != 0) {
     const int plane = __builtin_ctz(planes);
     planes &= planes - 1;
-    const float dp0 = distanceToPlane(plane, v0.clip);
-    const float dp1 = distanceToPlane(plane, v1.clip);
+    const float dp0 = distanceToPlane(plane, v0.clip, user);  // user clip planes: 6..
+    const float dp1 = distanceToPlane(plane, v1.clip, user);
     if (!std::isfinite(dp0) || !std::isfinite(dp1)) return false;
     if (dp1 < 0.0f) {
       const float t = dp1 / (dp1 - dp0);

@@ -21,8 +21,11 @@ struct ViewportTransform;
 // (viewport.h). Under GL_FLAT (`flat`) a moved end takes `provoking`'s
 // attributes instead (copy_flat). Returns false when nothing is left; else
 // *out0 and *out1 point at the ends (the inputs or `made`).
+// Clip planes and scissor: planes 6.. are the user clip planes of `user`,
+// cut after the six (clip.h).
 bool clipLine(const ClipVertex& v0, const ClipVertex& v1, uint32_t m0, uint32_t m1, uint32_t planes,
               int attribCount, const ViewportTransform& viewport, bool flat, const ClipVertex& provoking,
-              ClipVertex made[2], const ClipVertex** out0, const ClipVertex** out1);
+              ClipVertex made[2], const ClipVertex** out0, const ClipVertex** out1,
+              const UserClipPlanes& user = kNoUserClipPlanes);
 
 }  // namespace glfixed::primitive

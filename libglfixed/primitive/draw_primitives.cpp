@@ -91,14 +91,14 @@ void emitClippedPolygon(const BatchContext& b, const ClippedPolygon& poly, const
 }
 
 void loadVertices(const ShadedVertices& in, uint32_t n, const ViewportTransform& viewport,
-                  std::vector<ClipVertex>& out, std::vector<uint32_t>& masks) {
+                  const UserClipPlanes& user, std::vector<ClipVertex>& out, std::vector<uint32_t>& masks) {
   out.resize(n);
   masks.resize(n);
   const bool back = in.hasBack, secondary = in.hasSecondary;
   for (uint32_t i = 0; i < n; ++i) {
     ClipVertex& v = out[i];
     v.clip = in.clip[i];
-    masks[i] = clipMask(v.clip);
+    masks[i] = clipMask(v.clip, user);  // user clip planes: bits 6..13
     viewport.windowFromClip(v.clip, v.window);
     const glm::vec4& fp = in.primary[kFront][i];
     const glm::vec4 fs = secondary ? in.secondary[kFront][i] : glm::vec4(0);
@@ -165,7 +165,7 @@ void drawSegment(BatchContext& b, GLenum mode, const Segment& seg, bool indexed,
     if ((m0 | m1 | m2) == 0) {
       emitTriangle(b, v0, v1, v2, provoking);
     } else if ((m0 & m1 & m2) == 0) {
-      if (clipTriangle(v0, v1, v2, m0 | m1 | m2, attribCount, b.viewport, polygon))
+      if (clipTriangle(v0, v1, v2, m0 | m1 | m2, attribCount, b.viewport, polygon, state.userClipPlanes))
         emitClippedPolygon(b, polygon, provoking);
     }
   }
@@ -208,7 +208,7 @@ void drawPrimitives(const PrimitiveState& state, const ShadedVertices& vertices,
   static thread_local std::vector<ClipVertex> clipVertices;
   static thread_local std::vector<uint32_t> masks;
   static thread_local std::vector<Segment> segments;
-  loadVertices(vertices, n, b.viewport, clipVertices, masks);
+  loadVertices(vertices, n, b.viewport, state.userClipPlanes, clipVertices, masks);
   if (points) return drawPointBatch(b, n, clipVertices, masks);
   if (lines) return drawLineBatch(b, state.mode, n, clipVertices, masks);
 

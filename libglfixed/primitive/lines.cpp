@@ -37,7 +37,7 @@ void clipAndEmit(const BatchContext& b, const ClipVertex& v0, const ClipVertex& 
   // Under GL_FLAT the clipper copies the provoking colours into a moved end
   // (copy_flat); emitLine takes them from `provoking` anyway.
   if (!clipLine(v0, v1, m0, m1, m0 | m1, kClipAttribCount, b.viewport, b.state.flat, provoking, made, &e0,
-                &e1))
+                &e1, b.state.userClipPlanes))  // clip planes and scissor: the user planes too
     return;
   if (restart) resetLineStipple(b);
   emitLine(b, *e0, *e1, provoking);

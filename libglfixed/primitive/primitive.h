@@ -8,6 +8,7 @@
 
 #include "framebuffer/framebuffer.h"
 #include "pipeline/vertex_batch.h"
+#include "primitive/clip.h"
 #include "raster/raster.h"
 
 namespace glfixed::primitive {
@@ -56,6 +57,9 @@ struct PrimitiveState {
   uint16_t lineStipplePattern = 0xffff;
   uint32_t* lineStippleCounter = nullptr;  // kept from draw to draw (Context::lineStipple)
   bool lineStippleContinues = false;       // the batch goes on with the previous one's strip
+  // Clip planes and scissor: the enabled user clip planes (§2.12) in clip
+  // space, the eye-space planes times the inverse projection (clip.h).
+  UserClipPlanes userClipPlanes;
   raster::RasterState raster;  // depth test, scissor to the viewport, ...
   // Points (GL 2.1 §3.4; primitive/points.cpp). pointSize: glPointSize
   // clamped to [GL_POINT_SIZE_MIN, GL_POINT_SIZE_MAX] as the state tracker

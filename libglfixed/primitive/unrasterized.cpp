@@ -28,13 +28,13 @@ struct Batch {
 };
 
 void loadVertices(const ShadedVertices& in, uint32_t n, const ViewportTransform& viewport,
-                  std::vector<ClipVertex>& out, std::vector<uint32_t>& masks) {
+                  const UserClipPlanes& user, std::vector<ClipVertex>& out, std::vector<uint32_t>& masks) {
   out.resize(n);
   masks.resize(n);
   for (uint32_t i = 0; i < n; ++i) {
     ClipVertex& v = out[i];
     v.clip = in.clip[i];
-    masks[i] = clipMask(v.clip);
+    masks[i] = clipMask(v.clip, user);  // user clip planes: bits 6..13
     viewport.windowFromClip(v.clip, v.window);
     const glm::vec4& front = in.primary[kFront][i];
     const glm::vec4& back = in.hasBack ? in.primary[kBack][i] : front;
@@ -89,7 +89,8 @@ void drawTriangles(const Batch& b, GLenum mode, uint32_t n, const std::vector<Cl
     if ((m0 | m1 | m2) == 0) {
       emitTriangle(b, v[t[0]], v[t[1]], v[t[2]]);
     } else if ((m0 & m1 & m2) == 0) {
-      if (clipTriangle(v[t[0]], v[t[1]], v[t[2]], m0 | m1 | m2, kAttribCount, b.viewport, polygon))
+      if (clipTriangle(v[t[0]], v[t[1]], v[t[2]], m0 | m1 | m2, kAttribCount, b.viewport, polygon,
+                       b.state.userClipPlanes))
         emitClippedPolygon(b, polygon, v[t[provokingSlot]]);
     }
   }
@@ -105,7 +106,8 @@ void emitLine(const Batch& b, const ClipVertex& v0, const ClipVertex& v1, uint32
   const ClipVertex *e0, *e1;
   // GL_FLAT: a clipped end takes the provoking vertex's colours.
   const ClipVertex& provoking = b.state.firstVertexConvention ? v0 : v1;
-  if (!clipLine(v0, v1, m0, m1, m0 | m1, kAttribCount, b.viewport, b.state.flat, provoking, made, &e0, &e1))
+  if (!clipLine(v0, v1, m0, m1, m0 | m1, kAttribCount, b.viewport, b.state.flat, provoking, made, &e0, &e1,
+                b.state.userClipPlanes))
     return;
   b.sink.line(*e0, *e1);
 }
@@ -140,7 +142,7 @@ void drawUnrasterized(const PrimitiveState& state, const ShadedVertices& vertice
 
   static thread_local std::vector<ClipVertex> clipVertices;
   static thread_local std::vector<uint32_t> masks;
-  loadVertices(vertices, n, b.viewport, clipVertices, masks);
+  loadVertices(vertices, n, b.viewport, state.userClipPlanes, clipVertices, masks);
 
   GLenum mode = state.mode;
   using Submission = PrimitiveState::Submission;

@@ -21,14 +21,18 @@ struct CurrentAttrib {
   bool edgeFlag = true;
 };
 
+// GL_MAX_CLIP_PLANES: Mesa's is 8 (REFERENCE.md, "Depth and limits").
+constexpr int kMaxClipPlanes = 8;
+
 // GL_TRANSFORM_BIT.
 struct TransformAttrib {
   GLenum matrixMode = GL_MODELVIEW;
   bool normalize = false;
   bool rescaleNormal = false;
-  // Client clip planes (§2.12): held in eye space; no clipping against them yet.
-  std::array<glm::vec4, 6> clipPlane{};
-  std::array<bool, 6> clipPlaneEnabled{};
+  // Client clip planes (§2.12), in eye space as glClipPlane stored them
+  // (float, as Mesa's EyeUserPlane; api/gl_clip_api.cpp).
+  std::array<glm::vec4, kMaxClipPlanes> clipPlane{};
+  std::array<bool, kMaxClipPlanes> clipPlaneEnabled{};
 };
 
 // GL_VIEWPORT_BIT.

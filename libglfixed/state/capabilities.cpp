@@ -84,6 +84,17 @@ constexpr Capability kTable[] = {
     entry(GL_MAP2_TEXTURE_COORD_4, map2<6>, GL_EVAL_BIT, 0, kSettable),
     entry(GL_MAP2_VERTEX_3, map2<7>, GL_EVAL_BIT, 0, kSettable),
     entry(GL_MAP2_VERTEX_4, map2<8>, GL_EVAL_BIT, 0, kSettable),
+    // Clip planes and scissor (§2.12, §4.1.2): the user clip planes and the
+    // scissor test.
+    entry(GL_CLIP_PLANE0, clipPlane<0>, GL_TRANSFORM_BIT, 0, kSettable),
+    entry(GL_CLIP_PLANE1, clipPlane<1>, GL_TRANSFORM_BIT, 0, kSettable),
+    entry(GL_CLIP_PLANE2, clipPlane<2>, GL_TRANSFORM_BIT, 0, kSettable),
+    entry(GL_CLIP_PLANE3, clipPlane<3>, GL_TRANSFORM_BIT, 0, kSettable),
+    entry(GL_CLIP_PLANE4, clipPlane<4>, GL_TRANSFORM_BIT, 0, kSettable),
+    entry(GL_CLIP_PLANE5, clipPlane<5>, GL_TRANSFORM_BIT, 0, kSettable),
+    entry(GL_CLIP_PLANE0 + 6, clipPlane<6>, GL_TRANSFORM_BIT, 0, kSettable),
+    entry(GL_CLIP_PLANE0 + 7, clipPlane<7>, GL_TRANSFORM_BIT, 0, kSettable),
+    entry(GL_SCISSOR_TEST, field<&Context::scissor, &ScissorAttrib::test>, GL_SCISSOR_BIT, 0, kSettable),
     // State without its stage yet.
     entry(GL_ALPHA_TEST, field<&Context::colorBuffer, &ColorBufferAttrib::alphaTest>, GL_COLOR_BUFFER_BIT, 0,
           kHeld),
@@ -92,12 +103,6 @@ constexpr Capability kTable[] = {
           GL_COLOR_BUFFER_BIT, 0, kHeld),
     entry(GL_INDEX_LOGIC_OP, field<&Context::colorBuffer, &ColorBufferAttrib::indexLogicOp>,
           GL_COLOR_BUFFER_BIT, 0, kHeld),
-    entry(GL_CLIP_PLANE0, clipPlane<0>, GL_TRANSFORM_BIT, 0, kHeld),
-    entry(GL_CLIP_PLANE1, clipPlane<1>, GL_TRANSFORM_BIT, 0, kHeld),
-    entry(GL_CLIP_PLANE2, clipPlane<2>, GL_TRANSFORM_BIT, 0, kHeld),
-    entry(GL_CLIP_PLANE3, clipPlane<3>, GL_TRANSFORM_BIT, 0, kHeld),
-    entry(GL_CLIP_PLANE4, clipPlane<4>, GL_TRANSFORM_BIT, 0, kHeld),
-    entry(GL_CLIP_PLANE5, clipPlane<5>, GL_TRANSFORM_BIT, 0, kHeld),
     entry(GL_FOG, field<&Context::fog, &FogAttrib::enabled>, GL_FOG_BIT, 0, kHeld),
     entry(GL_COLOR_SUM, field<&Context::fog, &FogAttrib::colorSum>, GL_FOG_BIT, 0, kHeld),
     // Lines (primitive/lines.cpp) and points (primitive/points.cpp): drawn.
@@ -113,7 +118,6 @@ constexpr Capability kTable[] = {
           kHeld),
     entry(GL_POLYGON_OFFSET_FILL, field<&Context::polygon, &PolygonAttrib::offsetFill>, GL_POLYGON_BIT, 0,
           kHeld),
-    entry(GL_SCISSOR_TEST, field<&Context::scissor, &ScissorAttrib::test>, GL_SCISSOR_BIT, 0, kHeld),
     entry(GL_STENCIL_TEST, field<&Context::stencil, &StencilAttrib::test>, GL_STENCIL_BUFFER_BIT, 0, kHeld),
     entry(GL_MULTISAMPLE, field<&Context::multisample, &MultisampleAttrib::multisample>, GL_MULTISAMPLE_BIT,
           0, kHeld),

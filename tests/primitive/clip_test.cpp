@@ -138,4 +138,69 @@ TEST(ClipTriangle, AllPlanesAtOnce) {
 }
 
 }  // namespace
+// ---- user clip planes (planes 6..13) ----
+
+UserClipPlanes planes(std::initializer_list<std::pair<int, glm::vec4>> list) {
+  UserClipPlanes u;
+  for (const auto& p : list) {
+    u.enabled |= 1u << p.first;
+    u.plane[p.first] = p.second;
+  }
+  return u;
+}
+
+TEST(UserClipPlanes, MaskBitsFollowTheFrustumBits) {
+  const UserClipPlanes u = planes({{0, {1, 0, 0, 0}}, {5, {0, 1, 0, 0}}, {7, {0, 0, 0, -1}}});
+  EXPECT_EQ(clipMask({0.5f, 0.5f, 0, 1}, u), 1u << 13);  // plane 7 keeps nothing with w > 0
+  EXPECT_EQ(clipMask({-0.5f, 0.5f, 0, 1}, u), (1u << 6) | (1u << 13));
+  EXPECT_EQ(clipMask({-0.5f, -0.5f, 0, 1}, u), (1u << 6) | (1u << 11) | (1u << 13));
+  EXPECT_EQ(clipMask({2, 0.5f, 0, 1}, u), 1u | (1u << 13));
+  EXPECT_EQ(clipMask({0, 0, 0, 1}, kNoUserClipPlanes), 0u);
+  // A distance of exactly 0 is inside.
+  EXPECT_EQ(clipMask({0, 0, 0, 0}, planes({{2, {1, 1, 1, 1}}})), 0u);
+}
+
+TEST(UserClipPlanes, NanIsOutside) {
+  const UserClipPlanes u = planes({{3, {NAN, 0, 0, 0}}});
+  EXPECT_EQ(clipMask({0, 0, 0, 1}, u), 1u << 9);
+  EXPECT_TRUE(std::isnan(distanceToPlane(9, {0, 0, 0, 1}, u)));
+}
+
+// The mask's distance is llvmpipe's fused chain, the clipper's the unfused C
+// dot product: here they differ in sign (probed on Mesa, scene
+// clip_user_planes_all).
+TEST(UserClipPlanes, MaskIsFusedClipperIsNot) {
+  const float cz = 0.5f + std::ldexp(1.0f, -13) + std::ldexp(1.0f, -24);
+  const float pz = 1.0f + std::ldexp(1.0f, -12);
+  const float q = -(1.0f + std::ldexp(1.0f, -11) + std::ldexp(1.0f, -22)) / 2;
+  const UserClipPlanes u = planes({{0, {2 * q, 0, pz, 0}}});
+  const glm::vec4 c(0.5f, -0.5f, cz, 1);
+  EXPECT_EQ(clipMask(c, u), 1u << 6);
+  EXPECT_EQ(distanceToPlane(6, c, u), 0.0f);
+}
+
+TEST(UserClipPlanes, TriangleIsCutAfterTheFrustum) {
+  const UserClipPlanes u = planes({{1, {-1, 0, 0, 0.25f}}});  // x <= 0.25
+  ClipVertex v0 = vertex(-3, -0.5f, 0, 1, 0), v1 = vertex(0.75f, -0.5f, 0, 1, 1), v2 = vertex(0, 0.5f, 0, 1, 2);
+  const uint32_t m = clipMask(v0.clip, u) | clipMask(v1.clip, u) | clipMask(v2.clip, u);
+  EXPECT_EQ(m, (1u << 1) | (1u << 7));
+  ClippedPolygon poly;
+  ASSERT_TRUE(clipTriangle(v0, v1, v2, m, 1, kViewport, poly, u));
+  ASSERT_GE(poly.count, 4);
+  for (int i = 0; i < poly.count; ++i) {
+    EXPECT_GE(poly.vertex[i]->clip.x, -1.0f - 1e-6f) << i;
+    EXPECT_LE(poly.vertex[i]->clip.x, 0.25f + 1e-6f) << i;
+  }
+  // Without the planes the same mask bits would read no user plane.
+  EXPECT_EQ(distanceToPlane(7, v1.clip, kNoUserClipPlanes), 0.0f);
+}
+
+// Mesa's _mesa_transform_vector: the row vector times the matrix.
+TEST(UserClipPlanes, TransformPlaneIsARowVectorProduct) {
+  glm::mat4 m(1.0f);
+  m[3] = glm::vec4(1, 2, 3, 1);  // a translation
+  EXPECT_EQ(transformPlane({1, 0, 0, 0}, m), glm::vec4(1, 0, 0, 1));
+  EXPECT_EQ(transformPlane({0, 1, 1, 0}, m), glm::vec4(0, 1, 1, 5));
+}
+
 }  // namespace glfixed::primitive

@@ -44,6 +44,18 @@ struct RasterState {
   // as a constant (PrimitiveState::constantPrimary) makes only that one.
   unsigned flatGroups = kPrimaryGroup | kSecondaryGroup;
   static constexpr unsigned kPrimaryGroup = 1, kSecondaryGroup = 2;
+  // Polygon area: polygon offset (GL 2.1 §3.6.5) as llvmpipe's own triangle
+  // setup applies it (lp_state_setup.c, lp_do_offset_tri): one offset a
+  // triangle, from its unsnapped window positions, added to the interpolated
+  // z of every fragment. `polygonOffset` is on when Mesa hands the offset to
+  // llvmpipe's setup (draw.cpp says when); the factor and units are
+  // glPolygonOffset's, the units scaled here by the depth buffer's precision.
+  bool polygonOffset = false;
+  float offsetFactor = 0, offsetUnits = 0;
+  // Polygon stipple (GL 2.1 §3.6.2): 32 rows of 32 bits, row 0 the bottom
+  // row, bit 31 the leftmost pixel; null when disabled. Only triangle setup
+  // reads it (llvmpipe stipples filled polygons only).
+  const uint32_t* polygonStipple = nullptr;
 };
 
 // Snaps the three vertices to llvmpipe's 1/256 grid (fixed_point.h) and

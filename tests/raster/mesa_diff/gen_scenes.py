@@ -6,7 +6,9 @@ KIND: grid (vertices on the half-pixel grid), flat2d (w = 1, a little outside
 the view volume), persp (random w, inside), clip (anything, w < 0 too), tiny,
 sliver, near (w close to 0), mix (all of these).
 Environment: DEPTH=16|24 forces the depth buffer size, SIZE=WxH the buffer,
-CONST=p the probability of constant (non-per-vertex) colours in a frame.
+CONST=p the probability of constant (non-per-vertex) colours in a frame,
+OFFSET=p the probability of polygon offset in a frame (its own random stream,
+so the scenes without it do not change).
 """
 import random, sys, os
 
@@ -16,6 +18,7 @@ FUNCS = [0x200 + i for i in range(8)]  # NEVER..ALWAYS
 
 kind, seed, frames = sys.argv[1], int(sys.argv[2]), int(sys.argv[3])
 R = random.Random(seed)
+RO = random.Random(seed + 1000)  # polygon offset
 
 def f(x):
     return repr(float(x))
@@ -78,6 +81,13 @@ for fr in range(frames):
     ts = R.random() < 0.25
     out.append(f"twoside {int(ts)}")
     out.append(f"constcolor {int(R.random() < float(os.environ.get('CONST', '0.2')))}")
+    if RO.random() < float(os.environ.get('OFFSET', '0')):
+        en = RO.choice([(1, 0, 0), (1, 0, 0), (1, 1, 1), (0, 1, 0), (0, 0, 1)])
+        factor = RO.choice([0.0, 1.0, -1.0, 2.5, RO.uniform(-4, 4), RO.uniform(-300, 300)])
+        units = RO.choice([0.0, 1.0, -1.0, 2.0, 4.0, RO.uniform(-100, 100), RO.uniform(-3e5, 3e5)])
+        out.append(f"offset {en[0]} {en[1]} {en[2]} {f(factor)} {f(units)}")
+    else:
+        out.append("offset 0 0 0 0 0")
     for p in range(R.randint(1, 6)):
         mode = R.choice(['TRIANGLES', 'TRIANGLES', 'TRIANGLE_STRIP', 'TRIANGLE_FAN', 'QUADS', 'QUAD_STRIP', 'POLYGON'])
         n = {'TRIANGLES': 3 * R.randint(1, 4), 'QUADS': 4 * R.randint(1, 3)}.get(mode, R.randint(3, 9))

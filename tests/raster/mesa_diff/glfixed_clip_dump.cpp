@@ -110,6 +110,12 @@ int main(int argc, char** argv) {
     } else if (!strcmp(cmd, "range")) {
       ps.depthNear = rf(f);
       ps.depthFar = rf(f);
+    } else if (!strcmp(cmd, "offset")) {
+      // As pipeline/draw.cpp: any of the three enables offsets filled triangles.
+      const int fill = ri(f), line = ri(f), point = ri(f);
+      ps.raster.polygonOffset = fill || line || point;
+      ps.raster.offsetFactor = rf(f);
+      ps.raster.offsetUnits = rf(f);
     } else if (!strcmp(cmd, "colorsum")) {
       colorsum = ri(f) != 0;
     } else if (!strcmp(cmd, "constcolor")) {

@@ -56,6 +56,14 @@ int main(int argc, char **argv) {
     } else if (!strcmp(cmd, "range")) {
       double n = rf(f), fa = rf(f);
       glDepthRange(n, fa);
+    } else if (!strcmp(cmd, "offset")) {
+      /* polygon offset: the three enables, factor, units */
+      int fill = ri(f), line = ri(f), point = ri(f);
+      float factor = rf(f), units = rf(f);
+      if (fill) glEnable(GL_POLYGON_OFFSET_FILL); else glDisable(GL_POLYGON_OFFSET_FILL);
+      if (line) glEnable(GL_POLYGON_OFFSET_LINE); else glDisable(GL_POLYGON_OFFSET_LINE);
+      if (point) glEnable(GL_POLYGON_OFFSET_POINT); else glDisable(GL_POLYGON_OFFSET_POINT);
+      glPolygonOffset(factor, units);
     } else if (!strcmp(cmd, "colorsum")) {
       if (ri(f)) glEnable(GL_COLOR_SUM); else glDisable(GL_COLOR_SUM);
     } else if (!strcmp(cmd, "constcolor")) {

@@ -32,7 +32,7 @@ float determinant(const ClipVertex& v0, const ClipVertex& v1, const ClipVertex& 
 // draw_pipe_offset.c, do_offset_tri: the offset of one triangle, from the
 // determinant the cull stage computed (units already scaled).
 float drawModuleOffset(const PolygonPipeline& p, float det, const ClipVertex& v0, const ClipVertex& v1,
-                       const ClipVertex& v2) {
+                       const ClipVertex& v2, bool on) {
   const float invDet = 1.0f / det;
   const float ex = v0.window[0] - v2.window[0], ey = v0.window[1] - v2.window[1];
   const float ez = v0.window[2] - v2.window[2];
@@ -42,8 +42,8 @@ float drawModuleOffset(const PolygonPipeline& p, float det, const ClipVertex& v0
   const float b = ez * fx - ex * fz;
   const float dzdx = std::fabs(a * invDet), dzdy = std::fabs(b * invDet);
   const float maxSlope = dzdx > dzdy ? dzdx : dzdy;  // MAX2: NaN gives dzdy
-  const float mult = maxSlope * p.offsetScale;
-  return p.offsetUnits + mult;
+  const float mult = maxSlope * (on ? p.offsetScale : 0.0f);
+  return (on ? p.offsetUnits : 0.0f) + mult;
 }
 
 float saturate(float z) { return z < 0.0f ? 0.0f : (z > 1.0f ? 1.0f : z); }  // NaN stays
@@ -125,10 +125,11 @@ void emitPolygonTriangle(const BatchContext& b, const ClipVertex& v0, const Clip
       const GLenum mode = p.fillFront != p.fillBack ? fillMode(b, front) : p.fillFront;
       p.offsetOn = mode == GL_FILL ? p.offsetFill : (mode == GL_LINE ? p.offsetLine : p.offsetPoint);
     }
-    if (p.offsetOn) {
-      const float offset = drawModuleOffset(p, det, v0, v1, v2);
-      for (ClipVertex& v : w) v.window[2] = saturate(v.window[2] + offset);
-    }
+    // Off, the stage still runs with a zero factor and units: it clamps z to
+    // [0, 1] (which moves vertices the clipper left a little outside), and
+    // an infinite slope times 0 is NaN.
+    const float offset = drawModuleOffset(p, det, v0, v1, v2, p.offsetOn != 0);
+    for (ClipVertex& v : w) v.window[2] = saturate(v.window[2] + offset);
   }
   // Unfilled: det >= 0 is clockwise in GL's window space.
   const bool cw = det >= 0.0f;

@@ -7,8 +7,8 @@ the view volume), persp (random w, inside), clip (anything, w < 0 too), tiny,
 sliver, near (w close to 0), mix (all of these).
 Environment: DEPTH=16|24 forces the depth buffer size, SIZE=WxH the buffer,
 CONST=p the probability of constant (non-per-vertex) colours in a frame,
-OFFSET=p the probability of polygon offset in a frame (its own random stream,
-so the scenes without it do not change).
+OFFSET=p the probability of polygon offset in a frame, STIPPLE=p of polygon
+stipple (their own random streams, so the scenes without them do not change).
 """
 import random, sys, os
 
@@ -19,6 +19,7 @@ FUNCS = [0x200 + i for i in range(8)]  # NEVER..ALWAYS
 kind, seed, frames = sys.argv[1], int(sys.argv[2]), int(sys.argv[3])
 R = random.Random(seed)
 RO = random.Random(seed + 1000)  # polygon offset
+RS = random.Random(seed + 2000)  # polygon stipple
 
 def f(x):
     return repr(float(x))
@@ -88,6 +89,10 @@ for fr in range(frames):
         out.append(f"offset {en[0]} {en[1]} {en[2]} {f(factor)} {f(units)}")
     else:
         out.append("offset 0 0 0 0 0")
+    if RS.random() < float(os.environ.get('STIPPLE', '0')):
+        out.append(f"stipple 1 {RS.randint(0, 1 << 30)}")
+    else:
+        out.append("stipple 0 0")
     for p in range(R.randint(1, 6)):
         mode = R.choice(['TRIANGLES', 'TRIANGLES', 'TRIANGLE_STRIP', 'TRIANGLE_FAN', 'QUADS', 'QUAD_STRIP', 'POLYGON'])
         n = {'TRIANGLES': 3 * R.randint(1, 4), 'QUADS': 4 * R.randint(1, 3)}.get(mode, R.randint(3, 9))

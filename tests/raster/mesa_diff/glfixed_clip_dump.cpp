@@ -49,6 +49,7 @@ int main(int argc, char** argv) {
   Framebuffer fb;
   primitive::PrimitiveState ps;
   bool twoside = false, colorsum = false, constcolor = false;
+  static uint32_t stipple[32];
   ShadedVertices pending;
   GLenum pendingMode = 0;
   bool havePending = false;
@@ -116,6 +117,23 @@ int main(int argc, char** argv) {
       ps.raster.polygonOffset = fill || line || point;
       ps.raster.offsetFactor = rf(f);
       ps.raster.offsetUnits = rf(f);
+      ps.offsetFill = fill;
+      ps.offsetLine = line;
+      ps.offsetPoint = point;
+    } else if (!strcmp(cmd, "stipple")) {
+      // As pipeline/draw.cpp: the pattern as glPolygonStipple unpacks it.
+      const bool en = ri(f) != 0;
+      unsigned seed = static_cast<unsigned>(ri(f));
+      for (int row = 0; row < 32; ++row) {
+        uint32_t w = 0;
+        for (int k = 0; k < 4; ++k) {
+          seed = seed * 1103515245u + 12345u;
+          w = (w << 8) | ((seed >> 16) & 0xffu);
+        }
+        stipple[row] = w;
+      }
+      ps.polygonStipple = en;
+      ps.raster.polygonStipple = en ? stipple : nullptr;
     } else if (!strcmp(cmd, "colorsum")) {
       colorsum = ri(f) != 0;
     } else if (!strcmp(cmd, "constcolor")) {

@@ -64,6 +64,14 @@ int main(int argc, char **argv) {
       if (line) glEnable(GL_POLYGON_OFFSET_LINE); else glDisable(GL_POLYGON_OFFSET_LINE);
       if (point) glEnable(GL_POLYGON_OFFSET_POINT); else glDisable(GL_POLYGON_OFFSET_POINT);
       glPolygonOffset(factor, units);
+    } else if (!strcmp(cmd, "stipple")) {
+      /* polygon stipple: enable, and a pattern made from a seed */
+      int en = ri(f);
+      unsigned seed = (unsigned)ri(f);
+      GLubyte p[128];
+      for (int i = 0; i < 128; i++) { seed = seed * 1103515245u + 12345u; p[i] = (GLubyte)(seed >> 16); }
+      glPolygonStipple(p);
+      if (en) glEnable(GL_POLYGON_STIPPLE); else glDisable(GL_POLYGON_STIPPLE);
     } else if (!strcmp(cmd, "colorsum")) {
       if (ri(f)) glEnable(GL_COLOR_SUM); else glDisable(GL_COLOR_SUM);
     } else if (!strcmp(cmd, "constcolor")) {

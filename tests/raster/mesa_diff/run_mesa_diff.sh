@@ -36,4 +36,17 @@ for kind in flat2d persp clip sliver mix; do
     seed=$((seed + 1))
   done
 done
+# Polygon stipple (the draw module's pipeline for polygons), with offsets.
+for kind in flat2d persp clip mix; do
+  seed=1
+  while [ "$seed" -le "$seeds" ]; do
+    scene="$work/stipple-$kind-$seed.txt"
+    OFFSET=0.5 STIPPLE=0.8 python3 "$here/gen_scenes.py" "$kind" "$seed" "$frames" > "$scene" || exit 2
+    "$bin/mesa_clip_dump" "$scene" "$scene.mesa.bin" || exit 2
+    "$bin/glfixed_clip_dump" "$scene" "$scene.glfixed.bin" || exit 2
+    printf 'stipple %-8s seed %-3s ' "$kind" "$seed"
+    "$bin/compare_dumps" "$scene.mesa.bin" "$scene.glfixed.bin" 3 || status=1
+    seed=$((seed + 1))
+  done
+done
 exit $status

@@ -8,7 +8,8 @@ sliver, near (w close to 0), mix (all of these).
 Environment: DEPTH=16|24 forces the depth buffer size, SIZE=WxH the buffer,
 CONST=p the probability of constant (non-per-vertex) colours in a frame,
 OFFSET=p the probability of polygon offset in a frame, STIPPLE=p of polygon
-stipple (their own random streams, so the scenes without them do not change).
+stipple, SMOOTH=p of GL_POINT_SMOOTH or GL_LINE_SMOOTH (their own random
+streams, so the scenes without them do not change).
 """
 import random, sys, os
 
@@ -20,6 +21,7 @@ kind, seed, frames = sys.argv[1], int(sys.argv[2]), int(sys.argv[3])
 R = random.Random(seed)
 RO = random.Random(seed + 1000)  # polygon offset
 RS = random.Random(seed + 2000)  # polygon stipple
+RM = random.Random(seed + 3000)  # point and line smoothing
 
 def f(x):
     return repr(float(x))
@@ -93,6 +95,10 @@ for fr in range(frames):
         out.append(f"stipple 1 {RS.randint(0, 1 << 30)}")
     else:
         out.append("stipple 0 0")
+    if RM.random() < float(os.environ.get('SMOOTH', '0')):
+        out.append(f"smooth {RM.randint(0, 1)} {RM.randint(0, 1)}")
+    else:
+        out.append("smooth 0 0")
     for p in range(R.randint(1, 6)):
         mode = R.choice(['TRIANGLES', 'TRIANGLES', 'TRIANGLE_STRIP', 'TRIANGLE_FAN', 'QUADS', 'QUAD_STRIP', 'POLYGON'])
         n = {'TRIANGLES': 3 * R.randint(1, 4), 'QUADS': 4 * R.randint(1, 3)}.get(mode, R.randint(3, 9))

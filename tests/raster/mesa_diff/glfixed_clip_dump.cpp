@@ -134,6 +134,9 @@ int main(int argc, char** argv) {
       }
       ps.polygonStipple = en;
       ps.raster.polygonStipple = en ? stipple : nullptr;
+    } else if (!strcmp(cmd, "smooth")) {
+      const int pt = ri(f), ln = ri(f);
+      ps.lineOrPointPipeline = pt || ln;  // as pipeline/draw.cpp
     } else if (!strcmp(cmd, "colorsum")) {
       colorsum = ri(f) != 0;
     } else if (!strcmp(cmd, "constcolor")) {

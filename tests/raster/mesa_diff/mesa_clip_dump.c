@@ -72,6 +72,11 @@ int main(int argc, char **argv) {
       for (int i = 0; i < 128; i++) { seed = seed * 1103515245u + 12345u; p[i] = (GLubyte)(seed >> 16); }
       glPolygonStipple(p);
       if (en) glEnable(GL_POLYGON_STIPPLE); else glDisable(GL_POLYGON_STIPPLE);
+    } else if (!strcmp(cmd, "smooth")) {
+      /* GL_POINT_SMOOTH and GL_LINE_SMOOTH: they change how llvmpipe draws polygons too */
+      int pt = ri(f), ln = ri(f);
+      if (pt) glEnable(GL_POINT_SMOOTH); else glDisable(GL_POINT_SMOOTH);
+      if (ln) glEnable(GL_LINE_SMOOTH); else glDisable(GL_LINE_SMOOTH);
     } else if (!strcmp(cmd, "colorsum")) {
       if (ri(f)) glEnable(GL_COLOR_SUM); else glDisable(GL_COLOR_SUM);
     } else if (!strcmp(cmd, "constcolor")) {

@@ -68,6 +68,12 @@ bool queryHeldState(Context& ctx, GLenum pname, StateValue& out) {
       return true;
     }
     case GL_POINT_SPRITE_COORD_ORIGIN: out.set({double(ctx.point.spriteCoordOrigin)}); return true;
+    // Points: GL_POINT_SIZE_MAX and Mesa 22.3's llvmpipe limits (probed):
+    // aliased and smooth sizes 1 to 255, granularity 0.1f.
+    case GL_POINT_SIZE_MAX: out.set({ctx.point.sizeMax}); return true;
+    case GL_POINT_SIZE_RANGE:  // = GL_SMOOTH_POINT_SIZE_RANGE
+    case GL_ALIASED_POINT_SIZE_RANGE: out.set({1.0, 255.0}); return true;
+    case GL_POINT_SIZE_GRANULARITY: out.set({double(0.1f)}); return true;  // = GL_SMOOTH_POINT_SIZE_GRANULARITY
     case GL_SCISSOR_BOX:
       out.set({double(ctx.scissor.x), double(ctx.scissor.y), double(ctx.scissor.width),
                double(ctx.scissor.height)});
@@ -215,6 +221,11 @@ bool queryCoreState(Context& ctx, GLenum pname, StateValue& out) {
     }
     case GL_MAX_LIST_NESTING: out.set({double(kMaxListNesting)}); return true;
     case GL_SUBPIXEL_BITS: out.set({double(kSubpixelBits)}); return true;
+    // Lines: llvmpipe's limits as Mesa 22.3 reports them (probed; Mesa keeps
+    // them as floats). GL_LINE_WIDTH_RANGE is GL_SMOOTH_LINE_WIDTH_RANGE.
+    case GL_LINE_WIDTH_RANGE:
+    case GL_ALIASED_LINE_WIDTH_RANGE: out.set({1.0, 255.0}); return true;
+    case GL_LINE_WIDTH_GRANULARITY: out.set({double(0.1f)}); return true;
     case GL_RED_BITS: case GL_GREEN_BITS: case GL_BLUE_BITS: out.set({8.0}); return true;
     case GL_ALPHA_BITS: out.set({hasAlpha ? 8.0 : 0.0}); return true;
     case GL_DEPTH_BITS: out.set({double(fb.depth.bits())}); return true;

@@ -58,6 +58,26 @@ primitive::PrimitiveState primitiveState(const Context& ctx, GLenum mode, bool s
   // two-sided colours to the draw module.
   s.lineOrPointPipeline =
       ctx.point.smooth || ctx.line.smooth || (ctx.line.stipple && ctx.line.stipplePattern != 0xffff);
+  // Points (primitive.h): the size as the state tracker clamps it, CLAMP(x,
+  // min, max) = x > min ? (x > max ? max : x) : min; per-vertex sizes under
+  // distance attenuation (the vertex stage computes them).
+  {
+    const PointAttrib& p = ctx.point;
+    s.pointSize = p.size > p.sizeMin ? (p.size > p.sizeMax ? p.sizeMax : p.size) : p.sizeMin;
+    const glm::vec3& a = p.distanceAttenuation;
+    s.pointSizePerVertex = a.x != 1.0f || a.y != 0.0f || a.z != 0.0f;
+    s.pointSmooth = p.smooth && !p.sprite;
+    s.pointRegionX1 = ctx.framebuffer.width();
+    s.pointRegionY1 = ctx.framebuffer.height();
+  }
+
+  // Lines (primitive/lines.cpp): Mesa's rasterizer state (st_atom_rasterizer.c).
+  // CLAMP turns NaN into the minimum.
+  s.lineWidth = ctx.line.width > 1.0f ? (ctx.line.width > 255.0f ? 255.0f : ctx.line.width) : 1.0f;
+  s.lineSmooth = ctx.line.smooth;
+  s.lineStipple = ctx.line.stipple && ctx.line.stipplePattern != 0xffff;
+  s.lineStippleFactor = ctx.line.stippleRepeat;
+  s.lineStipplePattern = ctx.line.stipplePattern;
   return s;
 }
 

@@ -72,6 +72,10 @@ struct ShadedVertices {
   std::array<std::vector<glm::vec4>, 2> secondary;  // specular, GL_SEPARATE_SPECULAR_COLOR only
   bool hasBack = false;       // two-sided lighting: back colours are filled
   bool hasSecondary = false;  // separate specular: secondary colours are filled
+  // Points (GL 2.1 §3.4): the size of each vertex, filled only when point
+  // distance attenuation is on (hasPointSize); else the state's size is used.
+  std::vector<float> pointSize;
+  bool hasPointSize = false;
   size_t size() const { return clip.size(); }
 };
 

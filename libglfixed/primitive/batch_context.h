@@ -39,6 +39,11 @@ struct PolygonPipeline {
   // The offset stage picks its mode from the first triangle it sees and keeps
   // it for the draw (draw_pipe_offset.c, offset_first_tri): -1 not yet.
   mutable int offsetOn = -1;
+  // The stipple stage binds its fragment shader at the first filled
+  // triangle and keeps it until the pipeline flushes, so the lines and
+  // points of GL_LINE and GL_POINT faces after it are stippled too
+  // (draw_pipe_pstipple.c; mesa_diff polymode runs).
+  mutable bool stippleBound = false;
 };
 
 struct BatchContext {
@@ -59,6 +64,10 @@ struct BatchContext {
   PolygonPipeline polygon = {};
   const uint8_t* edgeFlags = nullptr;
   uint32_t vertexCount = 0;  // of the whole draw (its last segment ends there)
+  // Lines (lines.cpp): where the draw module's stipple stage stands along the
+  // lines drawn so far: each line adds its length in pixels rounded up
+  // (draw_pipe_stipple.c, an unsigned `counter`; scene lines_stipple).
+  mutable uint32_t lineStippleCounter = 0;
 };
 
 // A triangle leaving the clipper: the draw module's cull stage (pipeline
@@ -69,7 +78,8 @@ void emitTriangle(const BatchContext& b, const ClipVertex& v0, const ClipVertex&
 // Polygon area (unfilled.cpp). The edge flags of each triangle of `mode` as
 // the draw module's decomposition sets them (draw_decompose_tmp.h): bit k
 // for edge k, from vertex k to vertex k + 1 of the triangle as assembled on
-// the pipeline path; a polygon split into segments hides the split edges.
+// the pipeline path, bit 3 where the line stipple restarts; a polygon split
+// into segments hides the split edges.
 void assembleEdgeFlags(GLenum mode, uint32_t count, bool firstVertexConvention, bool firstSegment,
                        bool lastSegment, std::vector<uint8_t>& out);
 // A triangle through the polygon stages (PolygonPipeline), unclipped:
@@ -98,6 +108,10 @@ void drawPointBatch(BatchContext& b, uint32_t n, const std::vector<ClipVertex>& 
 // One clipped line segment in window space, to llvmpipe's line setup;
 // `provoking` gives its flat colour.
 void emitLine(const BatchContext& b, const ClipVertex& v0, const ClipVertex& v1, const ClipVertex& provoking);
+// Restarts the line stipple pattern (the draw module's
+// DRAW_PIPE_RESET_STIPPLE): at each GL_LINES line, at the first line of a
+// strip or loop, at each polygon's first edge.
+inline void resetLineStipple(const BatchContext& b) { b.lineStippleCounter = 0; }
 // One point whose centre survived clipping, to llvmpipe's point setup.
 void emitPoint(const BatchContext& b, const ClipVertex& v);
 

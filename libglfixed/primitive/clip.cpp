@@ -65,6 +65,8 @@ void interpolateClipVertex(const ClipVertex& out, const ClipVertex& in, float t,
     float d = in.attr[i] - out.attr[i];
     dst.attr[i] = out.attr[i] + t * d;
   }
+  // Points: the clipper interpolates the point size output too.
+  dst.pointSize = out.pointSize + t * (in.pointSize - out.pointSize);
   viewport.windowFromClipUnfused(dst.clip, dst.window);
 }
 

@@ -27,6 +27,7 @@ struct ClipVertex {
   glm::vec4 clip{0};     // clip coordinates
   float window[4] = {};  // x, y (down), z, 1/w: see viewport.h
   float attr[kMaxClipAttribs] = {};
+  float pointSize = 1;  // points: the per-vertex size (attenuation), interpolated by the clipper
 };
 
 // Bit i set: outside plane i (the order above). Comparisons as llvmpipe's

@@ -117,6 +117,7 @@ void loadVertices(const ShadedVertices& in, uint32_t n, const ViewportTransform&
       v.attr[kBackAttribs + k] = bp[k];
       v.attr[kBackAttribs + 4 + k] = bs[k];
     }
+    v.pointSize = in.hasPointSize ? in.pointSize[i] : 1.0f;  // points: per-vertex size
   }
 }
 
@@ -176,7 +177,7 @@ void drawSegment(BatchContext& b, GLenum mode, const Segment& seg, bool indexed,
       unsigned edges = edgeBits[i];
       if (useFlags)
         for (int k = 0; k < 3; ++k)
-          if (!b.edgeFlags[t[k]]) edges &= ~(1u << k);
+          if (!b.edgeFlags[t[k]]) edges &= ~(1u << k);  // bit 3 (stipple reset) stays
       const ClipVertex* v[3] = {&clipVertices[t[0]], &clipVertices[t[1]], &clipVertices[t[2]]};
       const ClipVertex& provoking = clipVertices[t[provokingSlot]];
       const uint32_t m0 = masks[t[0]], m1 = masks[t[1]], m2 = masks[t[2]];

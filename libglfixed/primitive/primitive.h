@@ -4,6 +4,8 @@
 
 #include <GL/gl.h>
 
+#include <cstdint>
+
 #include "framebuffer/framebuffer.h"
 #include "pipeline/vertex_batch.h"
 #include "raster/raster.h"
@@ -54,7 +56,28 @@ struct PrimitiveState {
   bool polygonStipple = false;
   bool lineOrPointPipeline = false;
   const uint8_t* edgeFlags = nullptr;
+  // Lines (GL 2.1 §3.5; primitive/lines.cpp), as Mesa's state tracker hands
+  // them to llvmpipe (st_atom_rasterizer.c): the width clamped to [1, 255]
+  // (NaN gives 1); stipple only when enabled with a pattern other than
+  // 0xffff; GL_LINE_SMOOTH makes rectangular, antialiased lines.
+  float lineWidth = 1;
+  bool lineSmooth = false;
+  bool lineStipple = false;
+  int lineStippleFactor = 1;  // [1, 256]
+  uint16_t lineStipplePattern = 0xffff;
   raster::RasterState raster;  // depth test, scissor to the viewport, ...
+  // Points (GL 2.1 §3.4; primitive/points.cpp). pointSize: glPointSize
+  // clamped to [GL_POINT_SIZE_MIN, GL_POINT_SIZE_MAX] as the state tracker
+  // does it (Mesa's CLAMP: a NaN minimum wins); pointSizePerVertex: distance
+  // attenuation is on and each vertex carries its size (ClipVertex).
+  // pointSmooth: GL_POINT_SMOOTH, drawn by the draw module's aapoint stage.
+  // The region points may cover, in GL window coordinates: the framebuffer,
+  // not the viewport (llvmpipe does not clip points to the viewport; a wide
+  // point whose centre is inside spills past its edge, MESA_FACTS "Points").
+  float pointSize = 1;
+  bool pointSizePerVertex = false;
+  bool pointSmooth = false;
+  int pointRegionX0 = 0, pointRegionY0 = 0, pointRegionX1 = 0, pointRegionY1 = 0;
 };
 
 // Draws every primitive of `vertices` (in the order GL_<mode> defines).

@@ -18,6 +18,8 @@ namespace glfixed::primitive {
 namespace {
 
 constexpr unsigned kEdge0 = 1, kEdge1 = 2, kEdge2 = 4, kAllEdges = 7;
+// DRAW_PIPE_RESET_STIPPLE: the line stipple restarts at this triangle's edges.
+constexpr unsigned kResetStipple = 8;
 
 // draw_pipe_cull.c: det = (v0 - v2) x (v1 - v2) in llvmpipe's y-down window
 // space; det < 0 is counter-clockwise in GL's window space.
@@ -52,28 +54,32 @@ GLenum fillMode(const BatchContext& b, bool front) {
   return front ? b.polygon.fillFront : b.polygon.fillBack;
 }
 
+void emitUnfilled(const BatchContext& b, ClipVertex (&w)[3], const ClipVertex& prov, GLenum mode,
+                  unsigned edges);
+
 }  // namespace
 
 void assembleEdgeFlags(GLenum mode, uint32_t count, bool first, bool firstSegment, bool lastSegment,
                        std::vector<uint8_t>& out) {
   out.clear();
+  const unsigned r = kResetStipple;
   switch (mode) {
     case GL_TRIANGLES:
-      for (uint32_t i = 2; i < count; i += 3) out.push_back(kAllEdges);
+      for (uint32_t i = 2; i < count; i += 3) out.push_back(kAllEdges | r);
       break;
     case GL_TRIANGLE_STRIP:
     case GL_TRIANGLE_FAN:
-      for (uint32_t i = 2; i < count; ++i) out.push_back(kAllEdges);
+      for (uint32_t i = 2; i < count; ++i) out.push_back(kAllEdges | r);
       break;
     case GL_QUADS:  // (0,1,3) (1,2,3), or (3,0,1) (3,1,2): the diagonal hidden
       for (uint32_t i = 3; i < count; i += 4) {
-        out.push_back(first ? kEdge0 | kEdge1 : kEdge0 | kEdge2);
+        out.push_back(r | (first ? kEdge0 | kEdge1 : kEdge0 | kEdge2));
         out.push_back(first ? kEdge1 | kEdge2 : kEdge0 | kEdge1);
       }
       break;
     case GL_QUAD_STRIP:  // the pipeline's halves: (2k+2, 2k, 2k+3) (2k, 2k+1, 2k+3)
       for (uint32_t i = 3; i < count; i += 2) {
-        out.push_back(first ? kEdge0 | kEdge1 : kEdge0 | kEdge2);
+        out.push_back(r | (first ? kEdge0 | kEdge1 : kEdge0 | kEdge2));
         out.push_back(first ? kEdge1 | kEdge2 : kEdge0 | kEdge1);
       }
       break;
@@ -82,6 +88,7 @@ void assembleEdgeFlags(GLenum mode, uint32_t count, bool first, bool firstSegmen
       const unsigned opening = first ? kEdge0 : kEdge2, closing = first ? kEdge2 : kEdge1;
       for (uint32_t i = 2; i < count; ++i) {
         unsigned e = next;
+        if (i == 2) e |= r;
         if (i == 2 && firstSegment) e |= opening;
         if (i + 1 == count && lastSegment) e |= closing;
         out.push_back(static_cast<uint8_t>(e));
@@ -134,19 +141,42 @@ void emitPolygonTriangle(const BatchContext& b, const ClipVertex& v0, const Clip
   // Unfilled: det >= 0 is clockwise in GL's window space.
   const bool cw = det >= 0.0f;
   const GLenum mode = fillMode(b, cw != frontCcw);
-  if (mode == GL_FILL) return setupPipelineTriangle(b, w[0], w[1], w[2], prov, face);
+  if (mode == GL_FILL) {
+    if (b.state.polygonStipple) p.stippleBound = true;
+    return setupPipelineTriangle(b, w[0], w[1], w[2], prov, face);
+  }
+  if (p.stippleBound && !b.raster.stippleEveryPrimitive) {
+    BatchContext stippled = b;  // rare: lines and points under the stipple shader
+    stippled.raster.stippleEveryPrimitive = true;
+    emitUnfilled(stippled, w, prov, mode, edges);
+    b.lineStippleCounter = stippled.lineStippleCounter;  // the line stipple carries on
+    return;
+  }
+  emitUnfilled(b, w, prov, mode, edges);
+}
+
+namespace {
+
+void emitUnfilled(const BatchContext& b, ClipVertex (&w)[3], const ClipVertex& prov, GLenum mode,
+                  unsigned edges) {
   // GL_FLAT: the flat-shade stage gave every vertex the provoking colour; the
   // line and point set-ups take it from the `provoking` argument.
   if (mode == GL_LINE) {
+    if (edges & kResetStipple) resetLineStipple(b);
     if (edges & kEdge2) emitLine(b, w[2], w[0], prov);
     if (edges & kEdge0) emitLine(b, w[0], w[1], prov);
     if (edges & kEdge1) emitLine(b, w[1], w[2], prov);
   } else {
+    if (b.state.flat)  // the flat-shade stage: every vertex takes the provoking colours
+      for (ClipVertex& v : w)
+        std::memcpy(v.attr + kFrontAttribs, prov.attr + kFrontAttribs, sizeof(float) * 8);
     if (edges & kEdge0) emitPoint(b, w[0]);
     if (edges & kEdge1) emitPoint(b, w[1]);
     if (edges & kEdge2) emitPoint(b, w[2]);
   }
 }
+
+}  // namespace
 
 namespace {
 
@@ -220,7 +250,7 @@ void emitPolygonClipped(const BatchContext& b, const ClippedPolygon& poly,
   // emit_poly: a fan around vertex 0 with the polygon's edges flagged.
   const bool first = b.state.firstVertexConvention;
   for (int i = 2; i < n; ++i) {
-    unsigned e = 0;
+    unsigned e = i == 2 ? kResetStipple : 0u;
     if (first) {  // (0, i-1, i): edge 0 is 0 -> 1 (first only), 1 is i-1 -> i, 2 is i -> 0 (last only)
       if (i == 2 && drawn[0]) e |= kEdge0;
       if (drawn[i - 1]) e |= kEdge1;

@@ -63,6 +63,15 @@ bool setupTriangle(const RasterState& state, const Framebuffer& fb, const FixedT
 // window positions in setup order, every operation in single precision.
 float polygonOffsetZ(const RasterState& state, int depthBits, const WindowVertex& v0, const WindowVertex& v1,
                      const WindowVertex& v2);
+// The square of a non-smooth point (raster/point.cpp); false when it covers
+// no pixel of `region`.
+bool setupPoint(const RasterState& state, const PointRegion& region, int framebufferHeight,
+                const WindowVertex& v, float size, const float* flatVaryings, PrimitiveSetup& out);
+// The quadrilateral and planes of a line (raster/line.cpp); false when it
+// covers no pixel of the draw region.
+bool setupLine(const RasterState& state, const Framebuffer& fb, const LineStyle& style,
+               const WindowVertex& v1, const WindowVertex& v2, const float* flatVaryings,
+               PrimitiveSetup& out);
 ShadeTarget makeShadeTarget(const RasterState& state, Framebuffer& fb, const PrimitiveSetup& t);
 
 // Shades every fragment of a set-up primitive (the AVX2 shader where the CPU

@@ -177,7 +177,15 @@ bool setupTriangle(const RasterState& state, const Framebuffer& fb, const FixedT
   return true;
 }
 
-void shadePrimitive(const RasterState& state, Framebuffer& fb, const PrimitiveSetup& t) {
+void shadePrimitive(const RasterState& state, Framebuffer& fb, const PrimitiveSetup& setup) {
+  PrimitiveSetup stippled;
+  const PrimitiveSetup* chosen = &setup;
+  if (state.stippleEveryPrimitive && state.polygonStipple && !setup.stipple) {
+    stippled = setup;
+    stippled.stipple = state.polygonStipple;
+    chosen = &stippled;
+  }
+  const PrimitiveSetup& t = *chosen;
   const ShadeTarget target = makeShadeTarget(state, fb, t);
   if (kUseAvx2)
     shadePrimitiveAvx2(t, target);

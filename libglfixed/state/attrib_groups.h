@@ -62,7 +62,7 @@ struct PointAttrib {
   float size = 1;
   bool smooth = false;
   bool sprite = false;
-  float sizeMin = 0, sizeMax = 1, fadeThresholdSize = 1;
+  float sizeMin = 0, sizeMax = 255, fadeThresholdSize = 1;  // sizeMax: Mesa's initial value, its largest size
   glm::vec3 distanceAttenuation{1, 0, 0};
   GLenum spriteCoordOrigin = GL_UPPER_LEFT;
   std::array<bool, kMaxTextureUnits> coordReplace{};

@@ -100,8 +100,9 @@ constexpr Capability kTable[] = {
     entry(GL_CLIP_PLANE5, clipPlane<5>, GL_TRANSFORM_BIT, 0, kHeld),
     entry(GL_FOG, field<&Context::fog, &FogAttrib::enabled>, GL_FOG_BIT, 0, kHeld),
     entry(GL_COLOR_SUM, field<&Context::fog, &FogAttrib::colorSum>, GL_FOG_BIT, 0, kHeld),
-    entry(GL_LINE_SMOOTH, field<&Context::line, &LineAttrib::smooth>, GL_LINE_BIT, 0, kHeld),
-    entry(GL_LINE_STIPPLE, field<&Context::line, &LineAttrib::stipple>, GL_LINE_BIT, 0, kHeld),
+    // Lines: rasterized (primitive/lines.cpp).
+    entry(GL_LINE_SMOOTH, field<&Context::line, &LineAttrib::smooth>, GL_LINE_BIT, 0, kSettable),
+    entry(GL_LINE_STIPPLE, field<&Context::line, &LineAttrib::stipple>, GL_LINE_BIT, 0, kSettable),
     entry(GL_POINT_SMOOTH, field<&Context::point, &PointAttrib::smooth>, GL_POINT_BIT, 0, kHeld),
     entry(GL_POINT_SPRITE, field<&Context::point, &PointAttrib::sprite>, GL_POINT_BIT, 0, kHeld),
     entry(GL_POLYGON_SMOOTH, field<&Context::polygon, &PolygonAttrib::smooth>, GL_POLYGON_BIT, 0, kHeld),

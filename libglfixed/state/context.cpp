@@ -21,6 +21,15 @@ const vertex::VertexState& Context::validate() {
   vertexState_.lightingConstants = &lightingConstants_;
   vertexState_.lightingAttrib = &lighting;
   vertexState_.transformAttrib = &transform;
+  // Points: what the vertex program's point-size code reads (vertex_stage.h).
+  {
+    const glm::vec3& a = point.distanceAttenuation;
+    vertexState_.pointAttenuated = a.x != 1.0f || a.y != 0.0f || a.z != 0.0f;
+    vertexState_.pointAttenuation = a;
+    vertexState_.pointSizeClamp[0] = point.size;
+    vertexState_.pointSizeClamp[1] = point.sizeMin >= 1.0f ? point.sizeMin : 1.0f;
+    vertexState_.pointSizeClamp[2] = point.sizeMax <= 255.0f ? point.sizeMax : 255.0f;
+  }
   dirty_ = 0;
   return vertexState_;
 }

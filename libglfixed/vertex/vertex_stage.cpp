@@ -1,5 +1,7 @@
 #include "vertex/vertex_stage.h"
 
+#include <cmath>
+
 #include "vertex/lighting_math.h"
 
 namespace glfixed::vertex {
@@ -19,6 +21,24 @@ inline glm::vec4 transformPosition(const glm::mat4& m, const glm::vec4& p) {
 
 }  // namespace
 
+// ffvertex_prog.c, build_atten_pointsize, as llvmpipe runs it: the eye z is a
+// DP4 with the modelview's third row (NIR sums it from w down, unfused), the
+// distance is |z_eye|, the factor a + d (b + d c) is two unfused MADs, RSQ
+// takes |factor| (an ARB program's RSQ does) and is 1 / sqrt; then
+// MAX(size, min) and MIN(., max) as x86 maxps/minps: a NaN operand gives the
+// second one (measured: a NaN attenuation draws a size-min point).
+float attenuatedPointSize(const VertexState& state, const glm::vec4& p) {
+  const glm::mat4& m = state.eyeFromObject;
+  const float zEye = ((p.w * m[3][2] + p.z * m[2][2]) + p.y * m[1][2]) + p.x * m[0][2];
+  const float d = std::fabs(zEye);
+  const glm::vec3& a = state.pointAttenuation;
+  float factor = d * a.z + a.y;
+  factor = d * factor + a.x;
+  const float size = lp::rsq(std::fabs(factor)) * state.pointSizeClamp[0];
+  const float atLeast = size > state.pointSizeClamp[1] ? size : state.pointSizeClamp[1];
+  return atLeast < state.pointSizeClamp[2] ? atLeast : state.pointSizeClamp[2];
+}
+
 void shadeBatch(const VertexState& state, const VertexBatch& batch, ShadedVertices& out) {
   const size_t n = batch.size();
   out.clip.resize(n);
@@ -26,6 +46,12 @@ void shadeBatch(const VertexState& state, const VertexBatch& batch, ShadedVertic
 
   out.hasBack = false;
   out.hasSecondary = false;
+  // Points: per-vertex sizes under distance attenuation.
+  out.hasPointSize = state.pointAttenuated;
+  if (state.pointAttenuated) {
+    out.pointSize.resize(n);
+    for (size_t i = 0; i < n; ++i) out.pointSize[i] = attenuatedPointSize(state, batch.position[i]);
+  }
   if (state.lighting) {
     lightBatch(state, batch, out);
     return;

@@ -16,7 +16,18 @@ struct VertexState {
   const LightingConstants* lightingConstants = nullptr;
   const LightingAttrib* lightingAttrib = nullptr;
   const TransformAttrib* transformAttrib = nullptr;
+  // Points: distance attenuation (GL 2.1 §3.4), computed per vertex as Mesa's
+  // fixed-function vertex program does (ffvertex_prog.c, build_atten_pointsize)
+  // when the attenuation is not (1, 0, 0). pointSizeClamp: the size, then the
+  // min and max sizes already clamped to the implementation's [1, 255]
+  // (prog_statevars.c, STATE_POINT_SIZE_CLAMPED).
+  bool pointAttenuated = false;
+  glm::vec3 pointAttenuation{1, 0, 0};
+  float pointSizeClamp[3] = {1, 1, 255};
 };
+
+// The attenuated size of one vertex (see pointAttenuated).
+float attenuatedPointSize(const VertexState& state, const glm::vec4& objectPosition);
 
 void shadeBatch(const VertexState& state, const VertexBatch& batch, ShadedVertices& out);
 

@@ -211,14 +211,25 @@ TEST(DrawPrimitives, BehindTheEyeAndPastTheFarPlane) {
   EXPECT_EQ(far.surface.coveredCount(), 0);
 }
 
-TEST(DrawPrimitives, PointsAndLinesDrawNothingYet) {
+TEST(DrawPrimitives, PointsDrawNothingYet) {
   Scene s;
   s.add(-1, -1, 0);
   s.add(1, -1, 1);
   s.add(-1, 1, 2);
   s.draw(GL_POINTS);
-  s.draw(GL_LINE_LOOP);
   EXPECT_EQ(s.surface.coveredCount(), 0);
+}
+
+// A 16x16 view: the loop around the lower-left half draws its three edges
+// (about 16 pixels each), not the inside.
+TEST(DrawPrimitives, LineLoopDrawsItsEdgesOnly) {
+  Scene s;
+  s.add(-0.95f, -0.95f, 0);
+  s.add(0.95f, -0.95f, 1);
+  s.add(-0.95f, 0.95f, 2);
+  s.draw(GL_LINE_LOOP);
+  EXPECT_GE(s.surface.coveredCount(), 40);
+  EXPECT_LE(s.surface.coveredCount(), 48);
 }
 
 TEST(DrawPrimitives, NineVertexTrianglesQuirk) {

@@ -8,8 +8,9 @@ sliver, near (w close to 0), mix (all of these).
 Environment: DEPTH=16|24 forces the depth buffer size, SIZE=WxH the buffer,
 CONST=p the probability of constant (non-per-vertex) colours in a frame,
 OFFSET=p the probability of polygon offset in a frame, STIPPLE=p of polygon
-stipple, SMOOTH=p of GL_POINT_SMOOTH or GL_LINE_SMOOTH (their own random
-streams, so the scenes without them do not change).
+stipple, SMOOTH=p of GL_POINT_SMOOTH or GL_LINE_SMOOTH, POLYMODE=p of glPolygonMode
+other than GL_FILL (their own random streams, so the scenes without them do
+not change).
 """
 import random, sys, os
 
@@ -22,6 +23,7 @@ R = random.Random(seed)
 RO = random.Random(seed + 1000)  # polygon offset
 RS = random.Random(seed + 2000)  # polygon stipple
 RM = random.Random(seed + 3000)  # point and line smoothing
+RP = random.Random(seed + 4000)  # polygon modes
 
 def f(x):
     return repr(float(x))
@@ -95,6 +97,11 @@ for fr in range(frames):
         out.append(f"stipple 1 {RS.randint(0, 1 << 30)}")
     else:
         out.append("stipple 0 0")
+    if RP.random() < float(os.environ.get('POLYMODE', '0')):
+        modes = [0x1B00, 0x1B01, 0x1B02]  # GL_POINT, GL_LINE, GL_FILL
+        out.append(f"polymode {RP.choice(modes)} {RP.choice(modes)}")
+    else:
+        out.append("polymode 6914 6914")
     if RM.random() < float(os.environ.get('SMOOTH', '0')):
         out.append(f"smooth {RM.randint(0, 1)} {RM.randint(0, 1)}")
     else:

@@ -61,6 +61,8 @@ int main(int argc, char** argv) {
     ps.raster.scissorY0 = std::max(0, ps.viewportY);
     ps.raster.scissorX1 = std::min(W, ps.viewportX + ps.viewportWidth);
     ps.raster.scissorY1 = std::min(H, ps.viewportY + ps.viewportHeight);
+    ps.pointRegionX1 = W;  // as pipeline/draw.cpp: points may cover the whole buffer
+    ps.pointRegionY1 = H;
     primitive::drawPrimitives(ps, pending, fb);
     havePending = false;
   };
@@ -134,6 +136,9 @@ int main(int argc, char** argv) {
       }
       ps.polygonStipple = en;
       ps.raster.polygonStipple = en ? stipple : nullptr;
+    } else if (!strcmp(cmd, "polymode")) {
+      ps.polygonModeFront = ri(f);
+      ps.polygonModeBack = ri(f);
     } else if (!strcmp(cmd, "smooth")) {
       const int pt = ri(f), ln = ri(f);
       ps.lineOrPointPipeline = pt || ln;  // as pipeline/draw.cpp

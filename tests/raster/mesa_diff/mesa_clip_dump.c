@@ -72,6 +72,10 @@ int main(int argc, char **argv) {
       for (int i = 0; i < 128; i++) { seed = seed * 1103515245u + 12345u; p[i] = (GLubyte)(seed >> 16); }
       glPolygonStipple(p);
       if (en) glEnable(GL_POLYGON_STIPPLE); else glDisable(GL_POLYGON_STIPPLE);
+    } else if (!strcmp(cmd, "polymode")) {
+      int front = ri(f), back = ri(f);
+      glPolygonMode(GL_FRONT, front);
+      glPolygonMode(GL_BACK, back);
     } else if (!strcmp(cmd, "smooth")) {
       /* GL_POINT_SMOOTH and GL_LINE_SMOOTH: they change how llvmpipe draws polygons too */
       int pt = ri(f), ln = ri(f);

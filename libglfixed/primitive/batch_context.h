@@ -91,6 +91,8 @@ void emitPolygonTriangle(const BatchContext& b, const ClipVertex& v0, const Clip
 // the flag of the edge they lie on (draw_pipe_clip.c).
 void emitPolygonClipped(const BatchContext& b, const ClippedPolygon& poly,
                         const ClipVertex* const original[3], unsigned edges, const ClipVertex& provoking);
+// The end of a draw: what the polygon stages still hold is drawn.
+void finishPolygonDraw(const BatchContext& b);
 // llvmpipe's triangle setup for a triangle from the pipeline (draw_primitives.cpp):
 // face +1/-1 forces the colours of that face (the draw module's two-sided
 // stage chose them), 0 lets llvmpipe's setup choose.

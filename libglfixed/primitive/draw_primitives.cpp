@@ -292,6 +292,7 @@ void drawPrimitives(const PrimitiveState& state, const ShadedVertices& vertices,
   else
     splitIntoSegments(mode, n, segments);
   for (const Segment& seg : segments) drawSegment(b, mode, seg, indexed, clipVertices, masks);
+  if (b.polygon.active) finishPolygonDraw(b);  // polygon area
 }
 
 }  // namespace glfixed::primitive

@@ -57,6 +57,33 @@ GLenum fillMode(const BatchContext& b, bool front) {
 void emitUnfilled(const BatchContext& b, ClipVertex (&w)[3], const ClipVertex& prov, GLenum mode,
                   unsigned edges);
 
+// Polygon stipple: the lines or points of the run the vbuf stage holds when
+// the first filled triangle binds the stipple shader are drawn with it, so
+// until then each run waits here (draw_pipe_pstipple.c, draw_pipe_vbuf.c:
+// a change between points, lines and triangles renders the held run).
+struct DeferredUnfilled {
+  ClipVertex w[3];
+  ClipVertex prov;
+  GLenum mode;
+  unsigned edges;
+};
+thread_local std::vector<DeferredUnfilled> deferred;
+
+void emitDeferred(const BatchContext& b, bool stippled) {
+  if (deferred.empty()) return;
+  BatchContext withStipple = b;
+  withStipple.raster.stippleEveryPrimitive = stippled;
+  for (DeferredUnfilled& d : deferred) emitUnfilled(withStipple, d.w, d.prov, d.mode, d.edges);
+  b.lineStippleCounter = withStipple.lineStippleCounter;
+  deferred.clear();
+}
+
+void deferUnfilled(const BatchContext& b, ClipVertex (&w)[3], const ClipVertex& prov, GLenum mode,
+                   unsigned edges) {
+  if (!deferred.empty() && deferred.back().mode != mode) emitDeferred(b, false);
+  deferred.push_back({{w[0], w[1], w[2]}, prov, mode, edges});
+}
+
 }  // namespace
 
 void assembleEdgeFlags(GLenum mode, uint32_t count, bool first, bool firstSegment, bool lastSegment,
@@ -142,9 +169,13 @@ void emitPolygonTriangle(const BatchContext& b, const ClipVertex& v0, const Clip
   const bool cw = det >= 0.0f;
   const GLenum mode = fillMode(b, cw != frontCcw);
   if (mode == GL_FILL) {
-    if (b.state.polygonStipple) p.stippleBound = true;
+    if (b.state.polygonStipple && !p.stippleBound) {
+      p.stippleBound = true;
+      emitDeferred(b, true);  // the vbuf stage renders them after the bind
+    }
     return setupPipelineTriangle(b, w[0], w[1], w[2], prov, face);
   }
+  if (b.state.polygonStipple && !p.stippleBound) return deferUnfilled(b, w, prov, mode, edges);
   if (p.stippleBound && !b.raster.stippleEveryPrimitive) {
     BatchContext stippled = b;  // rare: lines and points under the stipple shader
     stippled.raster.stippleEveryPrimitive = true;
@@ -219,6 +250,8 @@ int originalEdgeOf(const ClipVertex& a, const ClipVertex& b, const ClipVertex* c
 }
 
 }  // namespace
+
+void finishPolygonDraw(const BatchContext& b) { emitDeferred(b, b.polygon.stippleBound); }
 
 void emitPolygonClipped(const BatchContext& b, const ClippedPolygon& poly,
                         const ClipVertex* const original[3], unsigned edges, const ClipVertex& provoking) {

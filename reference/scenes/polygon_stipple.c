@@ -93,6 +93,19 @@ int main(int argc, char **argv)
     glColor3f(0.9f, 0.9f, 0.9f);
     glVertex2f(2, 70); glVertex2f(34, 72); glVertex2f(10, 116);
     glEnd();
+    /* stippled GL_LINE faces around a filled back face: Mesa's stipple
+     * shader, bound by the filled one, stipples the outlines of the draw
+     * (MESA_FACTS "Polygons") */
+    glPolygonMode(GL_FRONT, GL_LINE);
+    glBegin(GL_QUADS);
+    glColor3f(1, 0.6f, 0.2f);
+    glVertex2f(40, 75); glVertex2f(60, 75); glVertex2f(60, 95); glVertex2f(40, 95);
+    glColor3f(0.2f, 0.9f, 1);
+    glVertex2f(62, 75); glVertex2f(62, 110); glVertex2f(100, 110); glVertex2f(100, 75);
+    glColor3f(1, 0.6f, 0.2f);
+    glVertex2f(40, 97); glVertex2f(60, 97); glVertex2f(60, 116); glVertex2f(40, 116);
+    glEnd();
+    glPolygonMode(GL_FRONT, GL_FILL);
     glDisable(GL_POLYGON_STIPPLE);
     glBegin(GL_TRIANGLES);
     glColor3f(0.5f, 0.5f, 0.9f);

@@ -49,15 +49,15 @@ for kind in flat2d persp clip mix; do
     seed=$((seed + 1))
   done
 done
-# Polygon modes per face (the draw module's unfilled stage), with offsets.
-# Left out (MESA_FACTS "Polygons"): stipple, and mix, whose merged draws
+# Polygon modes per face (the draw module's unfilled stage), with offsets
+# and stipple. Left out (MESA_FACTS "Polygons"): mix, whose merged draws
 # show that Mesa keeps the offset stage's choice across draws; grid, whose
 # lines tie between two pixels, drawn a pixel off by the line stage.
 for kind in flat2d persp clip; do
   seed=1
   while [ "$seed" -le "$seeds" ]; do
     scene="$work/polymode-$kind-$seed.txt"
-    OFFSET=0.4 POLYMODE=0.9 python3 "$here/gen_scenes.py" "$kind" "$seed" "$frames" > "$scene" || exit 2
+    OFFSET=0.4 STIPPLE=0.4 POLYMODE=0.9 python3 "$here/gen_scenes.py" "$kind" "$seed" "$frames" > "$scene" || exit 2
     "$bin/mesa_clip_dump" "$scene" "$scene.mesa.bin" || exit 2
     "$bin/glfixed_clip_dump" "$scene" "$scene.glfixed.bin" || exit 2
     printf 'polymode %-8s seed %-3s ' "$kind" "$seed"

@@ -143,9 +143,14 @@ GLAPI void APIENTRY glIndexdv(const GLdouble* c) { if (c) colorIndex(static_cast
 GLAPI void APIENTRY glIndexub(GLubyte c) { colorIndex(static_cast<float>(c)); }
 GLAPI void APIENTRY glIndexubv(const GLubyte* c) { if (c) colorIndex(static_cast<float>(*c)); }
 
+// Polygon area: between a list's glBegin and glEnd the edge flag is vertex
+// data of the list's node (Mesa's save module keeps it per vertex).
 GLAPI void APIENTRY glEdgeFlag(GLboolean flag) {
-  if (api::compiledAttribute(&glEdgeFlag, flag)) return;
   Context* ctx = currentContext();
+  if (ctx && ctx->displayLists.compiler &&
+      api::compiledVertexData([&](pipeline::ListCompiler& l) { l.edgeFlag(flag != GL_FALSE); }, &glEdgeFlag,
+                              flag))
+    return;
   if (!ctx) return;
   // A vertex attribute of Mesa's vbo: it grows the vertex format like glNormal.
   if (ctx->insideBeginEnd || ctx->vbo.verticesBuffered) pipeline::edgeFlagBecomesVertexData(*ctx);

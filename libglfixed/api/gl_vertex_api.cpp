@@ -30,6 +30,7 @@ void addVertex(int size, float x, float y, float z, float w) {
   b.normal.push_back(ctx->current.normal);
   b.color.push_back(ctx->current.color);
   b.materialIndex.push_back(static_cast<uint32_t>(b.materials.size() - 1));
+  b.edgeFlag.push_back(ctx->current.edgeFlag);  // polygon area: the edge flag
   pipeline::vertexAdded(*ctx);
 }
 

@@ -94,6 +94,9 @@ void appendEach(const ArraySources& src, const Context& ctx, size_t count, Verte
     batch.normal[o] = src.normal ? glm::vec3(src.normalView.read(i, currentNormal)) : ctx.current.normal;
     batch.color[o] = src.color ? src.colorView.read(i, glm::vec4(0, 0, 0, 1)) : currentColor;
     batch.materialIndex[o] = 0;
+    // Polygon area: the edge flag array, else the current edge flag.
+    batch.edgeFlag[o] =
+        src.edgeFlag ? src.edgeFlagView.read(i, glm::vec4(1)).x != 0.0f : ctx.current.edgeFlag;
   }
 }
 

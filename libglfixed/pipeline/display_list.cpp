@@ -148,6 +148,14 @@ void ListCompiler::vertex(const glm::vec4& position) {
   v.normal.push_back(normal_);
   v.color.push_back(color_);
   v.materialIndex.push_back(0);
+  v.edgeFlag.push_back(edgeFlag_);  // polygon area
+}
+
+// Polygon area: the edge flag joins the node's vertices without growing its
+// format (not measured against Mesa's save module, which grows it).
+void ListCompiler::edgeFlag(bool flag) {
+  node_->hasEdgeFlag = true;
+  edgeFlag_ = flag;
 }
 
 void ListCompiler::color(const glm::vec4& c) {
@@ -187,6 +195,7 @@ void ListCompiler::growFormat(bool feedOpenPrimitive) {
   auto next = std::make_shared<VertexNode>();
   next->hasColor = old.hasColor;
   next->hasNormal = old.hasNormal;
+  next->hasEdgeFlag = old.hasEdgeFlag;  // polygon area
   if (insideBeginEnd_) {
     ListPrimitive& open = old.primitives.back();
     open.count = static_cast<uint32_t>(old.vertices.size()) - open.first;
@@ -356,6 +365,7 @@ void feedOpenPrimitive(const VertexNode& node) {
   for (uint32_t i = node.openFirst; i < v.size(); ++i) {
     if (node.hasColor) glColor4fv(&v.color[i][0]);
     if (node.hasNormal) glNormal3fv(&v.normal[i][0]);
+    if (node.hasEdgeFlag) glEdgeFlag(v.edgeFlag[i]);
     glVertex4fv(&v.position[i][0]);
   }
 }
@@ -377,6 +387,7 @@ void loopBackVertexNode(const VertexNode& node) {
       materialsUpTo(i);
       if (node.hasColor) glColor4fv(&v.color[i][0]);
       if (node.hasNormal) glNormal3fv(&v.normal[i][0]);
+      if (node.hasEdgeFlag) glEdgeFlag(v.edgeFlag[i]);
       glVertex4fv(&v.position[i][0]);
     }
     materialsUpTo(p.first + p.count);
@@ -403,6 +414,7 @@ void replayVertexNode(Context& ctx, VertexNode& node) {
       if (!node.hasNormal && b.size() && b.normal[0] != ctx.current.normal)
         std::fill(b.normal.begin(), b.normal.end(), ctx.current.normal);
       b.materials[0] = ctx.lighting.material;
+      if (!node.hasEdgeFlag) std::fill(b.edgeFlag.begin(), b.edgeFlag.end(), ctx.current.edgeFlag);
       drawBatch(ctx, b, primitive::PrimitiveState::Submission::kDisplayList, node.hasColor);
     }
     ctx.vbo = Context::VboFormat();
@@ -410,6 +422,7 @@ void replayVertexNode(Context& ctx, VertexNode& node) {
     const VertexBatch& v = node.vertices;
     if (v.size() > 0 && node.updatesCurrent) {
       if (node.hasNormal) ctx.current.normal = v.normal.back();
+      if (node.hasEdgeFlag) ctx.current.edgeFlag = v.edgeFlag.back() != 0;
       if (node.hasColor) {
         ctx.current.color = v.color.back();
         if (ctx.lighting.colorMaterial) trackColorMaterial(ctx);

@@ -65,6 +65,7 @@ struct VertexNode {
   std::vector<ListPrimitive> primitives;     // after the first merge: what loopback replays
   std::vector<VertexBatch> draws;            // after the second merge: what a replay draws
   bool hasColor = false, hasNormal = false;  // the node's vertex format
+  bool hasEdgeFlag = false;                  // polygon area: a glEdgeFlag inside the node's glBegin/glEnd
   bool loopback = false;                     // replayed through the immediate-mode entry points
   // Vertices carried over from the previous node to continue its open
   // primitive: feeding back skips them (they were fed with that node).
@@ -112,6 +113,7 @@ class ListCompiler {
   void end();
   void vertex(const glm::vec4& position);
   void color(const glm::vec4& c);
+  void edgeFlag(bool flag);  // polygon area
   void normal(const glm::vec3& n);
   void material(GLenum face, GLenum pname, const GLfloat* params, int count);
   void attributeCall(ListCommand call) { node_->attributeCalls.push_back(std::move(call)); }
@@ -144,6 +146,7 @@ class ListCompiler {
   bool insideBeginEnd_ = false;
   bool lastBeginFromArrays_ = false;
   glm::vec4 color_{1, 1, 1, 1};
+  bool edgeFlag_ = true;  // polygon area
   glm::vec3 normal_{0, 0, 1};
   // The nodes a format growth ended inside the glBegin/glEnd that goes on in
   // node_: if a node of the chain is fed back on replay, they all must be.

@@ -54,6 +54,26 @@ primitive::PrimitiveState primitiveState(const Context& ctx, GLenum mode, bool s
   r.scissorY0 = std::max(0, ctx.viewport.y);
   r.scissorX1 = std::min(ctx.framebuffer.width(), ctx.viewport.x + ctx.viewport.width);
   r.scissorY1 = std::min(ctx.framebuffer.height(), ctx.viewport.y + ctx.viewport.height);
+  // Polygon area (GL 2.1 §3.6.5): Mesa's state tracker hands llvmpipe the
+  // factor and units whenever any of the three offset enables is on, and
+  // llvmpipe's triangle setup then offsets every filled triangle, even with
+  // only GL_POLYGON_OFFSET_LINE or _POINT on (st_atom_rasterizer.c,
+  // lp_state_setup.c; a Mesa departure, matched: MESA_FACTS.md "Polygons").
+  r.polygonOffset = ctx.polygon.offsetFill || ctx.polygon.offsetLine || ctx.polygon.offsetPoint;
+  r.offsetFactor = ctx.polygon.offsetFactor;
+  r.offsetUnits = ctx.polygon.offsetUnits;
+  s.polygonModeFront = ctx.polygon.frontMode;
+  s.polygonModeBack = ctx.polygon.backMode;
+  s.offsetFill = ctx.polygon.offsetFill;
+  s.offsetLine = ctx.polygon.offsetLine;
+  s.offsetPoint = ctx.polygon.offsetPoint;
+  s.polygonStipple = ctx.polygon.stipple;
+  r.polygonStipple = ctx.polygon.stipple ? ctx.polygonStipple.pattern.data() : nullptr;
+  // lp_state_rasterizer.c: smooth points or lines, or a line stipple that is
+  // not all ones (st_atom_rasterizer.c), also make llvmpipe leave offset and
+  // two-sided colours to the draw module.
+  s.lineOrPointPipeline =
+      ctx.point.smooth || ctx.line.smooth || (ctx.line.stipple && ctx.line.stipplePattern != 0xffff);
   // Points (primitive.h): the size as the state tracker clamps it, CLAMP(x,
   // min, max) = x > min ? (x > max ? max : x) : min; per-vertex sizes under
   // distance attenuation (the vertex stage computes them).
@@ -117,6 +137,8 @@ void drawBatch(Context& ctx, const VertexBatch& batch, primitive::PrimitiveState
   ps.constantPrimary = !vs.lighting && !colorIsVertexData;
   ps.fetchedVertexOutside = fetchedVertexOutside;
   ps.lineStippleCounter = &ctx.lineStipple.counter;  // lines: Mesa keeps it from draw to draw
+  // Polygon area: the batch's edge flags (GL 2.1 §2.6.2), when it has them.
+  ps.edgeFlags = batch.edgeFlag.size() == batch.size() ? batch.edgeFlag.data() : nullptr;
   // GL_SELECT and GL_FEEDBACK: transformed and clipped, never rasterized (§5.2, §5.3).
   if (ctx.renderMode.mode == GL_SELECT)
     return primitive::selectPrimitives(ps, shaded, ctx.framebuffer.height(), ctx.renderMode.select);

@@ -25,6 +25,9 @@ struct VertexBatch {
   // materials[materialIndex[i]]. materials[0] is the material at glBegin.
   std::vector<uint32_t> materialIndex;
   std::vector<MaterialPair> materials;
+  // Polygon area: each vertex's edge flag (GL 2.1 §2.6.2), 1 or 0; kept in
+  // step with the other arrays.
+  std::vector<uint8_t> edgeFlag;
   size_t size() const { return position.size(); }
   void reset(GLenum primitiveMode, const MaterialPair& current) {
     mode = primitiveMode;
@@ -39,6 +42,7 @@ struct VertexBatch {
     normal.resize(n);
     color.resize(n);
     materialIndex.resize(n);
+    edgeFlag.resize(n, 1);
   }
   // Appends vertices [first, last) of `from` (their material indexes as they are).
   void appendVertices(const VertexBatch& from, size_t first, size_t last) {
@@ -47,6 +51,7 @@ struct VertexBatch {
     color.insert(color.end(), from.color.begin() + first, from.color.begin() + last);
     materialIndex.insert(materialIndex.end(), from.materialIndex.begin() + first,
                          from.materialIndex.begin() + last);
+    edgeFlag.insert(edgeFlag.end(), from.edgeFlag.begin() + first, from.edgeFlag.begin() + last);
   }
   void eraseFirstVertices(size_t n) { eraseVertices(0, n); }
   // Erases vertices [first, last) (their material indexes as they are).
@@ -55,6 +60,7 @@ struct VertexBatch {
     normal.erase(normal.begin() + first, normal.begin() + last);
     color.erase(color.begin() + first, color.begin() + last);
     materialIndex.erase(materialIndex.begin() + first, materialIndex.begin() + last);
+    edgeFlag.erase(edgeFlag.begin() + first, edgeFlag.begin() + last);
   }
 };
 

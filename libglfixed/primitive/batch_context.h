@@ -22,6 +22,30 @@ constexpr int kFrontAttribs = 0;  // primary RGBA, secondary RGBA
 constexpr int kBackAttribs = 8;
 constexpr int kClipAttribCount = kBackAttribs + 8;
 
+// Polygon area: what Mesa's draw module does to polygons when polygon state
+// makes it run its pipeline for them (llvmpipe_create_rasterizer_state,
+// draw_pipe_validate.c): an unfilled mode or polygon stipple. The pipeline
+// then takes over culling (float determinant), two-sided colours (the same
+// determinant) and polygon offset (per vertex, draw_pipe_offset.c) from
+// llvmpipe's setup, and its unfilled stage turns triangles into edges or
+// points (draw_pipe_unfilled.c). unfilled.cpp.
+struct PolygonPipeline {
+  bool active = false;    // every triangle of the draw goes through these stages
+  bool unfilled = false;  // a face is GL_LINE or GL_POINT (the cull stage then always runs)
+  GLenum fillFront = GL_FILL, fillBack = GL_FILL;  // after st's simplification for culling
+  bool offset = false;                             // an offset enable is on: the offset stage runs
+  bool offsetFill = false, offsetLine = false, offsetPoint = false;
+  float offsetScale = 0, offsetUnits = 0;  // units already scaled by the depth buffer
+  // The offset stage picks its mode from the first triangle it sees and keeps
+  // it for the draw (draw_pipe_offset.c, offset_first_tri): -1 not yet.
+  mutable int offsetOn = -1;
+  // The stipple stage binds its fragment shader at the first filled
+  // triangle and keeps it until the pipeline flushes, so the lines and
+  // points of GL_LINE and GL_POINT faces after it are stippled too
+  // (draw_pipe_pstipple.c; mesa_diff polymode runs).
+  mutable bool stippleBound = false;
+};
+
 struct BatchContext {
   const PrimitiveState& state;
   Framebuffer& fb;
@@ -35,6 +59,11 @@ struct BatchContext {
   // llvmpipe's "uses constant interpolation": GL_FLAT with a colour the
   // fragment shader really reads as an input. It changes quad splits.
   bool flatInputs;
+  // Polygon area: the polygon stages above, and each vertex's edge flag
+  // (null: all true).
+  PolygonPipeline polygon = {};
+  const uint8_t* edgeFlags = nullptr;
+  uint32_t vertexCount = 0;  // of the whole draw (its last segment ends there)
   // Lines (lines.cpp): where the draw module's stipple stage stands along the
   // lines drawn so far: each line adds its length in pixels rounded up
   // (draw_pipe_stipple.c, an unsigned `counter`; scene lines_stipple).
@@ -45,6 +74,30 @@ struct BatchContext {
 // only), then llvmpipe's triangle setup.
 void emitTriangle(const BatchContext& b, const ClipVertex& v0, const ClipVertex& v1, const ClipVertex& v2,
                   const ClipVertex& provoking);
+
+// Polygon area (unfilled.cpp). The edge flags of each triangle of `mode` as
+// the draw module's decomposition sets them (draw_decompose_tmp.h): bit k
+// for edge k, from vertex k to vertex k + 1 of the triangle as assembled on
+// the pipeline path, bit 3 where the line stipple restarts; a polygon split
+// into segments hides the split edges.
+void assembleEdgeFlags(GLenum mode, uint32_t count, bool firstVertexConvention, bool firstSegment,
+                       bool lastSegment, std::vector<uint8_t>& out);
+// A triangle through the polygon stages (PolygonPipeline), unclipped:
+// `edges` bit k says edge k is a boundary edge with its edge flag set.
+void emitPolygonTriangle(const BatchContext& b, const ClipVertex& v0, const ClipVertex& v1,
+                         const ClipVertex& v2, const ClipVertex& provoking, unsigned edges);
+// The same for what the clipper left of triangle `original` (its three
+// vertices) with edges `edges`: frustum clip edges are hidden, others keep
+// the flag of the edge they lie on (draw_pipe_clip.c).
+void emitPolygonClipped(const BatchContext& b, const ClippedPolygon& poly,
+                        const ClipVertex* const original[3], unsigned edges, const ClipVertex& provoking);
+// The end of a draw: what the polygon stages still hold is drawn.
+void finishPolygonDraw(const BatchContext& b);
+// llvmpipe's triangle setup for a triangle from the pipeline (draw_primitives.cpp):
+// face +1/-1 forces the colours of that face (the draw module's two-sided
+// stage chose them), 0 lets llvmpipe's setup choose.
+void setupPipelineTriangle(const BatchContext& b, const ClipVertex& v0, const ClipVertex& v1,
+                           const ClipVertex& v2, const ClipVertex& provoking, int face);
 
 // GL_LINES, GL_LINE_STRIP, GL_LINE_LOOP (lines.cpp): `n` loaded vertices
 // with their clip masks.

@@ -26,8 +26,10 @@ namespace {
 // llvmpipe's triangle setup: snap, cull and face by the fixed-point area,
 // pick front or back colours, put a clockwise triangle in counter-clockwise
 // order keeping the provoking vertex in its slot, rasterize.
+// `forcedFace` (polygon area): +1/-1 when the draw module's two-sided stage
+// already chose the colours (they are then in the front slots), 0 otherwise.
 void setupTriangle(const BatchContext& b, const ClipVertex& v0, const ClipVertex& v1, const ClipVertex& v2,
-                   const ClipVertex& provoking) {
+                   const ClipVertex& provoking, int forcedFace = 0) {
   const ClipVertex* v[3] = {&v0, &v1, &v2};
   raster::WindowVertex w[3];
   for (int i = 0; i < 3; ++i) {
@@ -42,7 +44,7 @@ void setupTriangle(const BatchContext& b, const ClipVertex& v0, const ClipVertex
   const bool front = b.face.isFront(sign);
   if (b.face.culls(front)) return;
 
-  const int base = (b.twoSided && !front) ? kBackAttribs : kFrontAttribs;
+  const int base = (b.twoSided && !front && forcedFace == 0) ? kBackAttribs : kFrontAttribs;
   for (int i = 0; i < 3; ++i) std::memcpy(w[i].varying, v[i]->attr + base, sizeof(float) * b.varyingCount);
   // Flat colours: the provoking vertex's (GL_FLAT), or Mesa's constant.
   const float* flat = nullptr;
@@ -67,6 +69,11 @@ void setupTriangle(const BatchContext& b, const ClipVertex& v0, const ClipVertex
 }
 
 }  // namespace
+
+void setupPipelineTriangle(const BatchContext& b, const ClipVertex& v0, const ClipVertex& v1,
+                           const ClipVertex& v2, const ClipVertex& provoking, int face) {
+  setupTriangle(b, v0, v1, v2, provoking, face);
+}
 
 // A triangle leaving the clipper: the draw module's cull stage (pipeline
 // only), then llvmpipe's setup.
@@ -141,7 +148,7 @@ void drawSegment(BatchContext& b, GLenum mode, const Segment& seg, bool indexed,
   auto global = [&](uint32_t local) { return (seg.hubReplaced && local == 0) ? 0u : seg.start + local; };
   uint32_t anyOutside = 0;
   for (uint32_t i = 0; i < seg.count; ++i) anyOutside |= masks[global(i)];
-  b.pipeline = anyOutside != 0 || state.fetchedVertexOutside;
+  b.pipeline = anyOutside != 0 || state.fetchedVertexOutside || b.polygon.active;
   const DecomposePath path =
       b.pipeline ? DecomposePath::kPipeline
                  : ((indexed || seg.hubReplaced) ? DecomposePath::kIndexed : DecomposePath::kLinear);
@@ -155,6 +162,34 @@ void drawSegment(BatchContext& b, GLenum mode, const Segment& seg, bool indexed,
   const int provokingSlot = primitive::provokingSlot(state.firstVertexConvention);
   const int attribCount = kClipAttribCount;
   static thread_local ClippedPolygon polygon;
+  // Polygon area: the draw module's polygon stages, with each triangle's
+  // boundary edges (unfilled.cpp). GL 2.1 §3.6.4: edge flags apply to
+  // independent triangles, quads and polygons only (Mesa applies them to
+  // strips and fans too: MESA_FACTS.md "Polygons").
+  if (b.polygon.active) {
+    static thread_local std::vector<uint8_t> edgeBits;
+    const bool firstSegment = !seg.hubReplaced, lastSegment = seg.start + seg.count == b.vertexCount;
+    assembleEdgeFlags(mode, seg.count, state.firstVertexConvention, firstSegment, lastSegment, edgeBits);
+    const bool useFlags = b.edgeFlags && (mode == GL_TRIANGLES || mode == GL_QUADS || mode == GL_POLYGON);
+    for (size_t i = 0; i < triangles.size(); ++i) {
+      const Triangle& local = triangles[i];
+      const uint32_t t[3] = {global(local[0]), global(local[1]), global(local[2])};
+      unsigned edges = edgeBits[i];
+      if (useFlags)
+        for (int k = 0; k < 3; ++k)
+          if (!b.edgeFlags[t[k]]) edges &= ~(1u << k);  // bit 3 (stipple reset) stays
+      const ClipVertex* v[3] = {&clipVertices[t[0]], &clipVertices[t[1]], &clipVertices[t[2]]};
+      const ClipVertex& provoking = clipVertices[t[provokingSlot]];
+      const uint32_t m0 = masks[t[0]], m1 = masks[t[1]], m2 = masks[t[2]];
+      if ((m0 | m1 | m2) == 0) {
+        emitPolygonTriangle(b, *v[0], *v[1], *v[2], provoking, edges);
+      } else if ((m0 & m1 & m2) == 0) {
+        if (clipTriangle(*v[0], *v[1], *v[2], m0 | m1 | m2, attribCount, b.viewport, polygon))
+          emitPolygonClipped(b, polygon, v, edges, provoking);
+      }
+    }
+    return;
+  }
   for (const Triangle& local : triangles) {
     const uint32_t t[3] = {global(local[0]), global(local[1]), global(local[2])};
     const ClipVertex& v0 = clipVertices[t[0]];
@@ -205,6 +240,35 @@ void drawPrimitives(const PrimitiveState& state, const ShadedVertices& vertices,
                         ((state.flat || state.constantSecondary) ? Group::kSecondaryGroup : 0u);
   b.flatInputs = state.flat && (!state.constantPrimary || (secondary && !state.constantSecondary));
 
+  // Polygon area: when polygon state makes Mesa run the draw module's
+  // pipeline for polygons (batch_context.h, PolygonPipeline).
+  if (!points && !lines) {
+    PolygonPipeline& p = b.polygon;
+    // st_atom_rasterizer.c: a culled face takes the other face's mode.
+    p.fillFront = state.polygonModeFront;
+    p.fillBack = state.polygonModeBack;
+    if (state.cullFace && state.cullFaceMode != GL_BACK) p.fillFront = p.fillBack;
+    if (state.cullFace && state.cullFaceMode != GL_FRONT) p.fillBack = p.fillFront;
+    p.unfilled = p.fillFront != GL_FILL || p.fillBack != GL_FILL;
+    p.offsetFill = state.offsetFill;
+    p.offsetLine = state.offsetLine;
+    p.offsetPoint = state.offsetPoint;
+    p.offset = p.offsetFill || p.offsetLine || p.offsetPoint;
+    // llvmpipe hands offset and two-sided colours to the draw module when
+    // it needs the pipeline at all (lp_state_rasterizer.c), which for
+    // polygons then runs when these are on (draw_pipe_validate.c).
+    const bool handedOver = p.unfilled || state.polygonStipple || state.lineOrPointPipeline;
+    p.active = p.unfilled || state.polygonStipple || (handedOver && (p.offset || b.twoSided));
+    if (p.active) {
+      const double mrd = fb.depth.bits() == 16 ? 1.0 / 65535.0 : 1.0 / 16777215.0;
+      p.offsetScale = state.raster.offsetFactor;
+      p.offsetUnits = static_cast<float>(double(state.raster.offsetUnits) * mrd * 2);
+      b.raster.polygonOffset = false;  // the draw module offsets instead
+    }
+    b.edgeFlags = state.edgeFlags;
+    b.vertexCount = n;
+  }
+
   static thread_local std::vector<ClipVertex> clipVertices;
   static thread_local std::vector<uint32_t> masks;
   static thread_local std::vector<Segment> segments;
@@ -228,6 +292,7 @@ void drawPrimitives(const PrimitiveState& state, const ShadedVertices& vertices,
   else
     splitIntoSegments(mode, n, segments);
   for (const Segment& seg : segments) drawSegment(b, mode, seg, indexed, clipVertices, masks);
+  if (b.polygon.active) finishPolygonDraw(b);  // polygon area
 }
 
 }  // namespace glfixed::primitive

@@ -46,6 +46,17 @@ struct PrimitiveState {
   // fetches its whole index range: pipeline/array_draw.cpp).
   bool fetchedVertexOutside = false;
   bool constantSecondary = false;
+  // Polygon area (GL 2.1 §3.6.4-§3.6.6; pipeline/draw.cpp fills them):
+  // the modes per face, the offset enables (the factor and units are in
+  // `raster`), the stipple enable (the pattern too), whether line or point
+  // state (smooth points or lines, line stipple) makes llvmpipe hand offset
+  // and two-sided colours to the draw module, and each vertex's edge flag
+  // (null: all true).
+  GLenum polygonModeFront = GL_FILL, polygonModeBack = GL_FILL;
+  bool offsetFill = false, offsetLine = false, offsetPoint = false;
+  bool polygonStipple = false;
+  bool lineOrPointPipeline = false;
+  const uint8_t* edgeFlags = nullptr;
   // Lines (GL 2.1 §3.5; primitive/lines.cpp), as Mesa's state tracker hands
   // them to llvmpipe (st_atom_rasterizer.c): the width clamped to [1, 255]
   // (NaN gives 1); stipple only when enabled with a pattern other than

@@ -47,6 +47,12 @@ struct PrimitiveSetup {
   Plane coverageX, coverageZ;
   float coverageHalfWidth = 0, coverageHalfLength = 0;
   float coverageAlongScale = 1;  // lines shorter than a pixel: measured, see line.cpp
+  // Polygon area: the polygon offset, added to z at every fragment (0:
+  // none), and the polygon stipple (RasterState::polygonStipple; null: none).
+  // A fragment in GL row y, column x is kept when bit 31 - x % 32 of row
+  // y % 32 is set.
+  float zOffset = 0;
+  const uint32_t* stipple = nullptr;
 };
 
 // The aaline coverage factor of a fragment, `oow` being 1 / t.w there (both
@@ -80,6 +86,11 @@ struct ShadeTarget {
 bool setupTriangle(const RasterState& state, const Framebuffer& fb, const FixedTriangle& fixed,
                    const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2,
                    const float* flatVaryings, PrimitiveSetup& out);
+// llvmpipe's polygon offset of a triangle (lp_state_setup.c): units scaled
+// by the depth buffer's resolvable difference, the slope from the unsnapped
+// window positions in setup order, every operation in single precision.
+float polygonOffsetZ(const RasterState& state, int depthBits, const WindowVertex& v0, const WindowVertex& v1,
+                     const WindowVertex& v2);
 // The square of a non-smooth point (raster/point.cpp); false when it covers
 // no pixel of `region`.
 bool setupPoint(const RasterState& state, const PointRegion& region, int framebufferHeight,
@@ -94,6 +105,10 @@ ShadeTarget makeShadeTarget(const RasterState& state, Framebuffer& fb, const Pri
 // Shades every fragment of a set-up primitive (the AVX2 shader where the CPU
 // has it, else the scalar one).
 void shadePrimitive(const RasterState& state, Framebuffer& fb, const PrimitiveSetup& t);
+
+// Polygon stipple of one GL row: bit 31 - (x % 32) is pixel x (GL 2.1 §3.6.2).
+inline uint32_t stippleRow(const uint32_t* stipple, int glY) { return stipple[glY & 31]; }
+inline bool stipplePasses(uint32_t row, int x) { return (row >> (31 - (x & 31))) & 1u; }
 
 // Calls span(py, lo, hi) for every row of the primitive with pixels inside,
 // [lo, hi] being exactly the pixels inside on that row. (shade_avx2.cpp has

@@ -44,6 +44,21 @@ struct RasterState {
   // as a constant (PrimitiveState::constantPrimary) makes only that one.
   unsigned flatGroups = kPrimaryGroup | kSecondaryGroup;
   static constexpr unsigned kPrimaryGroup = 1, kSecondaryGroup = 2;
+  // Polygon area: polygon offset (GL 2.1 §3.6.5) as llvmpipe's own triangle
+  // setup applies it (lp_state_setup.c, lp_do_offset_tri): one offset a
+  // triangle, from its unsnapped window positions, added to the interpolated
+  // z of every fragment. `polygonOffset` is on when Mesa hands the offset to
+  // llvmpipe's setup (draw.cpp says when); the factor and units are
+  // glPolygonOffset's, the units scaled here by the depth buffer's precision.
+  bool polygonOffset = false;
+  float offsetFactor = 0, offsetUnits = 0;
+  // Polygon stipple (GL 2.1 §3.6.2): 32 rows of 32 bits, row 0 the bottom
+  // row, bit 31 the leftmost pixel; null when disabled. Only triangle setup
+  // reads it (llvmpipe stipples filled polygons only).
+  const uint32_t* polygonStipple = nullptr;
+  // Stipple lines and points too (Mesa's stipple shader left bound after a
+  // filled polygon: primitive/batch_context.h, PolygonPipeline).
+  bool stippleEveryPrimitive = false;
   // Lines (raster/line.cpp): llvmpipe draws a line wherever it falls in its
   // draw region, the framebuffer (cut by the scissor box when there is one),
   // not in the viewport: [lineRegionX0, lineRegionX1) x [lineRegionY0,

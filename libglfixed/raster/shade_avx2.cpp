@@ -84,6 +84,7 @@ GLFIXED_AVX2 void shadePrimitiveAvx2(const PrimitiveSetup& t, const ShadeTarget&
   // A 4-byte pixel with every channel written: one 32-bit word a pixel.
   const bool packedStore = bpp == 4 && s.allColor && s.alpha >= 0;
   const Plane zPlane = t.z, wPlane = t.w;
+  const __m256 zOffset = _mm256_set1_ps(t.zOffset);  // polygon offset, as the scalar shader
   const Plane* const planes = t.varying;
 
   const __m256 laneX = _mm256_setr_ps(0, 1, 2, 3, 4, 5, 6, 7);
@@ -118,15 +119,24 @@ GLFIXED_AVX2 void shadePrimitiveAvx2(const PrimitiveSetup& t, const ShadeTarget&
     uint8_t* const colorRow = color.pixel(0, glY);
     uint32_t* const depth32 = depth32Base ? depth32Base + size_t(glY) * depthWidth : nullptr;
     uint16_t* const depth16 = depth16Base ? depth16Base + size_t(glY) * depthWidth : nullptr;
+    const uint32_t stipple = t.stipple ? stippleRow(t.stipple, glY) : ~0u;
     for (int x = lo; x <= hi; x += 8) {
       const int n = hi - x + 1 < 8 ? hi - x + 1 : 8;
       const bool full = n == 8;
       __m256i live = _mm256_cmpgt_epi32(_mm256_set1_epi32(n), laneIndex);
+      if (stipple != ~0u) {  // polygon stipple: lane i is pixel x + i, bit 31 - (x + i) % 32
+        const uint32_t rotated = (stipple << (x & 31)) | (x & 31 ? stipple >> (32 - (x & 31)) : 0u);
+        const __m256i bits = _mm256_srlv_epi32(_mm256_set1_epi32(static_cast<int>(rotated)),
+                                               _mm256_setr_epi32(31, 30, 29, 28, 27, 26, 25, 24));
+        const __m256i one = _mm256_set1_epi32(1);
+        live = _mm256_and_si256(live, _mm256_cmpeq_epi32(_mm256_and_si256(bits, one), one));
+        if (_mm256_testz_si256(live, live)) continue;
+      }
       const __m256 fpx = _mm256_add_ps(_mm256_set1_ps(static_cast<float>(x)), laneX);
       alignas(32) uint32_t lanes[8];
 
       if (depthBits) {
-        const __m256i z = depthToUnormX8(planeAt(zPlane, fpx, fpy), depthBits);
+        const __m256i z = depthToUnormX8(_mm256_add_ps(planeAt(zPlane, fpx, fpy), zOffset), depthBits);
         __m256i stored;
         if (depth32) {
           if (full) {

@@ -6,6 +6,7 @@
 #pragma GCC optimize("fp-contract=off")
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 
 #include "raster/depth.h"
@@ -37,8 +38,10 @@ void shadeSpanScalar(const PrimitiveSetup& t, const ShadeTarget& s, int py, int 
       s.depthBits == 24 ? static_cast<uint32_t*>(s.depth) + size_t(glY) * s.depthWidth : nullptr;
   uint16_t* depth16 =
       s.depthBits == 16 ? static_cast<uint16_t*>(s.depth) + size_t(glY) * s.depthWidth : nullptr;
+  const uint32_t stipple = t.stipple ? stippleRow(t.stipple, glY) : ~0u;
   for (int px = lo; px <= hi; ++px) {
     const float fpx = static_cast<float>(px);
+    if (!stipplePasses(stipple, px)) continue;  // polygon stipple: the fragment is discarded
     // Smooth points: the aapoint shader's discard and alpha factor (primitive_setup.h).
     float aaFactor = 1.0f;
     if (t.aaPoint) {
@@ -50,7 +53,7 @@ void shadeSpanScalar(const PrimitiveSetup& t, const ShadeTarget& s, int py, int 
       aaFactor = t.aaK >= d ? coverage : 1.0f;
     }
     if (s.depthBits) {
-      const uint32_t z = depthToUnorm(t.z.at(fpx, fpy), s.depthBits);
+      const uint32_t z = depthToUnorm(t.z.at(fpx, fpy) + t.zOffset, s.depthBits);
       const uint32_t stored = depth32 ? depth32[px] : depth16[px];
       if (!depthPasses(s.depthFunc, z, stored)) continue;
       if (s.depthWrite) {
@@ -118,6 +121,31 @@ ShadeTarget makeShadeTarget(const RasterState& state, Framebuffer& fb, const Pri
   return s;
 }
 
+float polygonOffsetZ(const RasterState& state, int depthBits, const WindowVertex& v0, const WindowVertex& v1,
+                     const WindowVertex& v2) {
+  if (!state.polygonOffset) return 0.0f;
+  // The units in depth-buffer steps: (float)(units * mrd * 2) in double, mrd
+  // 1/(2^bits - 1); no depth buffer counts as 24 bits (lp_state_setup.c,
+  // lp_make_setup_variant_key; u_format.c, util_get_depth_format_mrd).
+  const double mrd = depthBits == 16 ? 1.0 / 65535.0 : 1.0 / 16777215.0;
+  const float units = static_cast<float>(double(state.offsetUnits) * mrd * 2);
+  const float scale = state.offsetFactor;
+  if (!(scale != 0.0f || units != 0.0f)) return 0.0f;
+  // The area as the attribute planes compute it, then the z slopes from the
+  // cross product of the edges (v0 - v1) and (v2 - v0).
+  const float dx01 = v0.x - v1.x, dy01 = v0.y - v1.y, dz01 = v0.z - v1.z;
+  const float dx20 = v2.x - v0.x, dy20 = v2.y - v0.y, dz20 = v2.z - v0.z;
+  const float e = dx01 * dy20, f = dy01 * dx20;
+  const float ooa = 1.0f / (e - f);
+  const float a = dz20 * dy01 - dy20 * dz01;
+  const float b = dx20 * dz01 - dz20 * dx01;
+  const float dzdx = std::fabs(a * ooa), dzdy = std::fabs(b * ooa);
+  // An unordered compare: a NaN slope in x is kept.
+  const float maxSlope = !(dzdx <= dzdy) ? dzdx : dzdy;
+  const float mult = maxSlope * scale;
+  return units + mult;  // GL 2.1 has no offset clamp (Mesa's is 0: none)
+}
+
 bool setupTriangle(const RasterState& state, const Framebuffer& fb, const FixedTriangle& fixed,
                    const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2,
                    const float* flatVaryings, PrimitiveSetup& t) {
@@ -145,6 +173,8 @@ bool setupTriangle(const RasterState& state, const Framebuffer& fb, const FixedT
   t.varyingCount = state.varyingCount == 8 ? 8 : 4;
   const PlaneSetup ps(v0.x, v0.y, v1.x, v1.y, v2.x, v2.y);
   t.z = ps.plane(v0.z, v1.z, v2.z);
+  t.zOffset = polygonOffsetZ(state, fb.depth.bits(), v0, v1, v2);
+  t.stipple = state.polygonStipple;
   t.flatPrimary = flatVaryings && (state.flatGroups & RasterState::kPrimaryGroup);
   t.flatSecondary = flatVaryings && (state.flatGroups & RasterState::kSecondaryGroup);
   if (flatVaryings)
@@ -160,7 +190,15 @@ bool setupTriangle(const RasterState& state, const Framebuffer& fb, const FixedT
   return true;
 }
 
-void shadePrimitive(const RasterState& state, Framebuffer& fb, const PrimitiveSetup& t) {
+void shadePrimitive(const RasterState& state, Framebuffer& fb, const PrimitiveSetup& setup) {
+  PrimitiveSetup stippled;
+  const PrimitiveSetup* chosen = &setup;
+  if (state.stippleEveryPrimitive && state.polygonStipple && !setup.stipple) {
+    stippled = setup;
+    stippled.stipple = state.polygonStipple;
+    chosen = &stippled;
+  }
+  const PrimitiveSetup& t = *chosen;
   const ShadeTarget target = makeShadeTarget(state, fb, t);
   if (kUseAvx2 && !t.aaPoint)  // smooth points: the scalar shader only (primitive_setup.h)
     shadePrimitiveAvx2(t, target);

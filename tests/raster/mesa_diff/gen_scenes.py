@@ -6,7 +6,11 @@ KIND: grid (vertices on the half-pixel grid), flat2d (w = 1, a little outside
 the view volume), persp (random w, inside), clip (anything, w < 0 too), tiny,
 sliver, near (w close to 0), mix (all of these).
 Environment: DEPTH=16|24 forces the depth buffer size, SIZE=WxH the buffer,
-CONST=p the probability of constant (non-per-vertex) colours in a frame.
+CONST=p the probability of constant (non-per-vertex) colours in a frame,
+OFFSET=p the probability of polygon offset in a frame, STIPPLE=p of polygon
+stipple, SMOOTH=p of GL_POINT_SMOOTH or GL_LINE_SMOOTH, POLYMODE=p of glPolygonMode
+other than GL_FILL (their own random streams, so the scenes without them do
+not change).
 """
 import random, sys, os
 
@@ -16,6 +20,10 @@ FUNCS = [0x200 + i for i in range(8)]  # NEVER..ALWAYS
 
 kind, seed, frames = sys.argv[1], int(sys.argv[2]), int(sys.argv[3])
 R = random.Random(seed)
+RO = random.Random(seed + 1000)  # polygon offset
+RS = random.Random(seed + 2000)  # polygon stipple
+RM = random.Random(seed + 3000)  # point and line smoothing
+RP = random.Random(seed + 4000)  # polygon modes
 
 def f(x):
     return repr(float(x))
@@ -78,6 +86,26 @@ for fr in range(frames):
     ts = R.random() < 0.25
     out.append(f"twoside {int(ts)}")
     out.append(f"constcolor {int(R.random() < float(os.environ.get('CONST', '0.2')))}")
+    if RO.random() < float(os.environ.get('OFFSET', '0')):
+        en = RO.choice([(1, 0, 0), (1, 0, 0), (1, 1, 1), (0, 1, 0), (0, 0, 1)])
+        factor = RO.choice([0.0, 1.0, -1.0, 2.5, RO.uniform(-4, 4), RO.uniform(-300, 300)])
+        units = RO.choice([0.0, 1.0, -1.0, 2.0, 4.0, RO.uniform(-100, 100), RO.uniform(-3e5, 3e5)])
+        out.append(f"offset {en[0]} {en[1]} {en[2]} {f(factor)} {f(units)}")
+    else:
+        out.append("offset 0 0 0 0 0")
+    if RS.random() < float(os.environ.get('STIPPLE', '0')):
+        out.append(f"stipple 1 {RS.randint(0, 1 << 30)}")
+    else:
+        out.append("stipple 0 0")
+    if RP.random() < float(os.environ.get('POLYMODE', '0')):
+        modes = [0x1B00, 0x1B01, 0x1B02]  # GL_POINT, GL_LINE, GL_FILL
+        out.append(f"polymode {RP.choice(modes)} {RP.choice(modes)}")
+    else:
+        out.append("polymode 6914 6914")
+    if RM.random() < float(os.environ.get('SMOOTH', '0')):
+        out.append(f"smooth {RM.randint(0, 1)} {RM.randint(0, 1)}")
+    else:
+        out.append("smooth 0 0")
     for p in range(R.randint(1, 6)):
         mode = R.choice(['TRIANGLES', 'TRIANGLES', 'TRIANGLE_STRIP', 'TRIANGLE_FAN', 'QUADS', 'QUAD_STRIP', 'POLYGON'])
         n = {'TRIANGLES': 3 * R.randint(1, 4), 'QUADS': 4 * R.randint(1, 3)}.get(mode, R.randint(3, 9))

@@ -49,6 +49,7 @@ int main(int argc, char** argv) {
   Framebuffer fb;
   primitive::PrimitiveState ps;
   bool twoside = false, colorsum = false, constcolor = false;
+  static uint32_t stipple[32];
   ShadedVertices pending;
   GLenum pendingMode = 0;
   bool havePending = false;
@@ -60,6 +61,8 @@ int main(int argc, char** argv) {
     ps.raster.scissorY0 = std::max(0, ps.viewportY);
     ps.raster.scissorX1 = std::min(W, ps.viewportX + ps.viewportWidth);
     ps.raster.scissorY1 = std::min(H, ps.viewportY + ps.viewportHeight);
+    ps.pointRegionX1 = W;  // as pipeline/draw.cpp: points may cover the whole buffer
+    ps.pointRegionY1 = H;
     primitive::drawPrimitives(ps, pending, fb);
     havePending = false;
   };
@@ -110,6 +113,35 @@ int main(int argc, char** argv) {
     } else if (!strcmp(cmd, "range")) {
       ps.depthNear = rf(f);
       ps.depthFar = rf(f);
+    } else if (!strcmp(cmd, "offset")) {
+      // As pipeline/draw.cpp: any of the three enables offsets filled triangles.
+      const int fill = ri(f), line = ri(f), point = ri(f);
+      ps.raster.polygonOffset = fill || line || point;
+      ps.raster.offsetFactor = rf(f);
+      ps.raster.offsetUnits = rf(f);
+      ps.offsetFill = fill;
+      ps.offsetLine = line;
+      ps.offsetPoint = point;
+    } else if (!strcmp(cmd, "stipple")) {
+      // As pipeline/draw.cpp: the pattern as glPolygonStipple unpacks it.
+      const bool en = ri(f) != 0;
+      unsigned seed = static_cast<unsigned>(ri(f));
+      for (int row = 0; row < 32; ++row) {
+        uint32_t w = 0;
+        for (int k = 0; k < 4; ++k) {
+          seed = seed * 1103515245u + 12345u;
+          w = (w << 8) | ((seed >> 16) & 0xffu);
+        }
+        stipple[row] = w;
+      }
+      ps.polygonStipple = en;
+      ps.raster.polygonStipple = en ? stipple : nullptr;
+    } else if (!strcmp(cmd, "polymode")) {
+      ps.polygonModeFront = ri(f);
+      ps.polygonModeBack = ri(f);
+    } else if (!strcmp(cmd, "smooth")) {
+      const int pt = ri(f), ln = ri(f);
+      ps.lineOrPointPipeline = pt || ln;  // as pipeline/draw.cpp
     } else if (!strcmp(cmd, "colorsum")) {
       colorsum = ri(f) != 0;
     } else if (!strcmp(cmd, "constcolor")) {

@@ -56,6 +56,31 @@ int main(int argc, char **argv) {
     } else if (!strcmp(cmd, "range")) {
       double n = rf(f), fa = rf(f);
       glDepthRange(n, fa);
+    } else if (!strcmp(cmd, "offset")) {
+      /* polygon offset: the three enables, factor, units */
+      int fill = ri(f), line = ri(f), point = ri(f);
+      float factor = rf(f), units = rf(f);
+      if (fill) glEnable(GL_POLYGON_OFFSET_FILL); else glDisable(GL_POLYGON_OFFSET_FILL);
+      if (line) glEnable(GL_POLYGON_OFFSET_LINE); else glDisable(GL_POLYGON_OFFSET_LINE);
+      if (point) glEnable(GL_POLYGON_OFFSET_POINT); else glDisable(GL_POLYGON_OFFSET_POINT);
+      glPolygonOffset(factor, units);
+    } else if (!strcmp(cmd, "stipple")) {
+      /* polygon stipple: enable, and a pattern made from a seed */
+      int en = ri(f);
+      unsigned seed = (unsigned)ri(f);
+      GLubyte p[128];
+      for (int i = 0; i < 128; i++) { seed = seed * 1103515245u + 12345u; p[i] = (GLubyte)(seed >> 16); }
+      glPolygonStipple(p);
+      if (en) glEnable(GL_POLYGON_STIPPLE); else glDisable(GL_POLYGON_STIPPLE);
+    } else if (!strcmp(cmd, "polymode")) {
+      int front = ri(f), back = ri(f);
+      glPolygonMode(GL_FRONT, front);
+      glPolygonMode(GL_BACK, back);
+    } else if (!strcmp(cmd, "smooth")) {
+      /* GL_POINT_SMOOTH and GL_LINE_SMOOTH: they change how llvmpipe draws polygons too */
+      int pt = ri(f), ln = ri(f);
+      if (pt) glEnable(GL_POINT_SMOOTH); else glDisable(GL_POINT_SMOOTH);
+      if (ln) glEnable(GL_LINE_SMOOTH); else glDisable(GL_LINE_SMOOTH);
     } else if (!strcmp(cmd, "colorsum")) {
       if (ri(f)) glEnable(GL_COLOR_SUM); else glDisable(GL_COLOR_SUM);
     } else if (!strcmp(cmd, "constcolor")) {

@@ -184,7 +184,8 @@ void drawSegment(BatchContext& b, GLenum mode, const Segment& seg, bool indexed,
       if ((m0 | m1 | m2) == 0) {
         emitPolygonTriangle(b, *v[0], *v[1], *v[2], provoking, edges);
       } else if ((m0 & m1 & m2) == 0) {
-        if (clipTriangle(*v[0], *v[1], *v[2], m0 | m1 | m2, attribCount, b.viewport, polygon))
+        if (clipTriangle(*v[0], *v[1], *v[2], m0 | m1 | m2, attribCount, b.viewport, polygon,
+                         state.userClipPlanes))
           emitPolygonClipped(b, polygon, v, edges, provoking);
       }
     }

@@ -24,6 +24,9 @@ static void draw_any_prim(void)
 {
     GLenum mode = all_prims[fz_int(10)];
     int n = 1 + fz_int(12), i;
+    /* GL 2.1 ignores edge flags in strips and fans; Mesa applies them there
+     * (REFERENCE.md), a defect not copied, so they go elsewhere only. */
+    int flags_ok = mode != GL_TRIANGLE_STRIP && mode != GL_TRIANGLE_FAN && mode != GL_QUAD_STRIP;
     fz_emit = fz_draw_wanted(fz_draw_index);
     fz_draw_index++;
     fz_cx = fz_f(-1, 1); fz_cy = fz_f(-1, 1); fz_cz = fz_f(-0.8f, 0.8f);
@@ -32,7 +35,7 @@ static void draw_any_prim(void)
         int k = fz_int(12);
         if (k == 0) L_Color();
         else if (k == 1) L_Normal();
-        else if (k == 2 && fz_emit) { int f = fz_int(2); LOG("glEdgeFlag(%d);", f); glEdgeFlag((GLboolean)f); }
+        else if (k == 2 && fz_emit && flags_ok) { int f = fz_int(2); LOG("glEdgeFlag(%d);", f); glEdgeFlag((GLboolean)f); }
         vertex();
     }
     if (fz_emit) { LOG("glEnd();"); glEnd(); fz_inside = 0; }

@@ -15,7 +15,8 @@
 #define FUZZ_DEFAULT_SEED 3u
 
 static int fz_smooth;
-static int fz_prim_ops = 4;   /* GLFX_FUZZ_PRIM_OPS=n: only the first n kinds of primitive_state_op (default: sizes and line stipple, until the other stages land) */
+static int fz_emit_flags;   /* a glEdgeFlag was called in the current primitive */
+static int fz_prim_ops = 14;  /* GLFX_FUZZ_PRIM_OPS=n: only the first n kinds of primitive_state_op */
 static const GLenum all_prims[] = { GL_POINTS, GL_LINES, GL_LINE_STRIP, GL_LINE_LOOP, GL_TRIANGLES,
                                     GL_TRIANGLE_STRIP, GL_TRIANGLE_FAN, GL_QUADS, GL_QUAD_STRIP, GL_POLYGON };
 
@@ -35,12 +36,14 @@ static void draw_any_prim(void)
         int k = fz_int(12);
         if (k == 0) L_Color();
         else if (k == 1) L_Normal();
-        else if (k == 2 && fz_emit && flags_ok) { int f = fz_int(2); LOG("glEdgeFlag(%d);", f); glEdgeFlag((GLboolean)f); }
+        else if (k == 2 && fz_emit && flags_ok) { int f = fz_int(2); LOG("glEdgeFlag(%d);", f); glEdgeFlag((GLboolean)f); fz_emit_flags = 1; }
         vertex();
     }
     if (fz_emit) { LOG("glEnd();"); glEnd(); fz_inside = 0; }
     fz_emit = 1;
-    if (fz_chance(30)) { LOG("glEdgeFlag(1);"); glEdgeFlag(GL_TRUE); }
+    /* Back to GL_TRUE, so that no later strip or fan meets a false flag. */
+    if (flags_ok && fz_emit_flags) { LOG("glEdgeFlag(1);"); glEdgeFlag(GL_TRUE); }
+    fz_emit_flags = 0;
 }
 
 static const GLenum poly_modes[] = { GL_POINT, GL_LINE, GL_FILL };
@@ -119,7 +122,7 @@ int main(int argc, char **argv)
 {
     int nops, i;
     fz_smooth = env_int("GLFX_FUZZ_SMOOTH", 0);
-    fz_prim_ops = env_int("GLFX_FUZZ_PRIM_OPS", 4);
+    fz_prim_ops = env_int("GLFX_FUZZ_PRIM_OPS", 14);
     nops = fuzz_begin(argc, argv, FUZZ_DEFAULT_SEED);
     for (i = 0; i < nops; i++) {
         int k = fz_int(100);

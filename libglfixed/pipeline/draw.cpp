@@ -101,20 +101,17 @@ primitive::PrimitiveState primitiveState(const Context& ctx, GLenum mode, bool s
   // the scissor box too (§4.1.2; llvmpipe's draw regions, st_atom_scissor.c).
   if (ctx.scissor.test) {
     const ScissorAttrib& sc = ctx.scissor;
-    const int x1 = static_cast<int>(std::min<long long>(1 << 30, static_cast<long long>(sc.x) + sc.width));
-    const int y1 = static_cast<int>(std::min<long long>(1 << 30, static_cast<long long>(sc.y) + sc.height));
-    r.scissorX0 = std::max(r.scissorX0, sc.x);
-    r.scissorY0 = std::max(r.scissorY0, sc.y);
-    r.scissorX1 = std::min(r.scissorX1, x1);
-    r.scissorY1 = std::min(r.scissorY1, y1);
-    s.pointRegionX0 = std::max(s.pointRegionX0, sc.x);
-    s.pointRegionY0 = std::max(s.pointRegionY0, sc.y);
-    s.pointRegionX1 = std::min(s.pointRegionX1, x1);
-    s.pointRegionY1 = std::min(s.pointRegionY1, y1);
-    r.lineRegionX0 = std::max(r.lineRegionX0, sc.x);
-    r.lineRegionY0 = std::max(r.lineRegionY0, sc.y);
-    r.lineRegionX1 = std::min(r.lineRegionX1, x1);
-    r.lineRegionY1 = std::min(r.lineRegionY1, y1);
+    const int sx1 = static_cast<int>(std::min<long long>(1 << 30, static_cast<long long>(sc.x) + sc.width));
+    const int sy1 = static_cast<int>(std::min<long long>(1 << 30, static_cast<long long>(sc.y) + sc.height));
+    auto cut = [&](int& x0, int& y0, int& x1, int& y1) {
+      x0 = std::max(x0, sc.x);
+      y0 = std::max(y0, sc.y);
+      x1 = std::min(x1, sx1);
+      y1 = std::min(y1, sy1);
+    };
+    cut(r.scissorX0, r.scissorY0, r.scissorX1, r.scissorY1);
+    cut(s.pointRegionX0, s.pointRegionY0, s.pointRegionX1, s.pointRegionY1);
+    cut(r.lineRegionX0, r.lineRegionY0, r.lineRegionX1, r.lineRegionY1);
   }
   s.userClipPlanes = userClipPlanes(ctx);
   return s;

@@ -83,8 +83,6 @@ primitive::PrimitiveState primitiveState(const Context& ctx, GLenum mode, bool s
     const glm::vec3& a = p.distanceAttenuation;
     s.pointSizePerVertex = a.x != 1.0f || a.y != 0.0f || a.z != 0.0f;
     s.pointSmooth = p.smooth && !p.sprite;
-    s.pointRegionX1 = ctx.framebuffer.width();
-    s.pointRegionY1 = ctx.framebuffer.height();
   }
 
   // Lines (primitive/lines.cpp): Mesa's rasterizer state (st_atom_rasterizer.c).
@@ -110,8 +108,7 @@ primitive::PrimitiveState primitiveState(const Context& ctx, GLenum mode, bool s
       y1 = std::min(y1, sy1);
     };
     cut(r.scissorX0, r.scissorY0, r.scissorX1, r.scissorY1);
-    cut(s.pointRegionX0, s.pointRegionY0, s.pointRegionX1, s.pointRegionY1);
-    cut(r.lineRegionX0, r.lineRegionY0, r.lineRegionX1, r.lineRegionY1);
+    cut(r.pointLineRegion.x0, r.pointLineRegion.y0, r.pointLineRegion.x1, r.pointLineRegion.y1);
   }
   s.userClipPlanes = userClipPlanes(ctx);
   return s;

@@ -36,15 +36,13 @@ void emitPoint(const BatchContext& b, const ClipVertex& v) {
     flat = flatValues;
   }
   const float size = state.pointSizePerVertex ? v.pointSize : state.pointSize;
-  const raster::PointRegion region{state.pointRegionX0, state.pointRegionY0, state.pointRegionX1,
-                                   state.pointRegionY1};
   if (state.pointSmooth) {
     // draw_pipe_aapoint.c: the radius is half the vertex's size, or, from
     // the state's size, 1 for sizes up to 2 (a NaN size gives NaN).
     const float radius = state.pointSizePerVertex ? 0.5f * size : (size <= 2.0f ? 1.0f : 0.5f * size);
-    return raster::drawSmoothPoint(b.raster, b.fb, region, w, radius, flat);
+    return raster::drawSmoothPoint(b.raster, b.fb, w, radius, flat);
   }
-  raster::drawPoint(b.raster, b.fb, region, w, size, flat);
+  raster::drawPoint(b.raster, b.fb, w, size, flat);
 }
 
 }  // namespace glfixed::primitive

@@ -77,13 +77,10 @@ struct PrimitiveState {
   // does it (Mesa's CLAMP: a NaN minimum wins); pointSizePerVertex: distance
   // attenuation is on and each vertex carries its size (ClipVertex).
   // pointSmooth: GL_POINT_SMOOTH, drawn by the draw module's aapoint stage.
-  // The region points may cover, in GL window coordinates: the framebuffer,
-  // not the viewport (llvmpipe does not clip points to the viewport; a wide
-  // point whose centre is inside spills past its edge, MESA_FACTS "Points").
+  // Where points may fall: raster::RasterState::pointLineRegion.
   float pointSize = 1;
   bool pointSizePerVertex = false;
   bool pointSmooth = false;
-  int pointRegionX0 = 0, pointRegionY0 = 0, pointRegionX1 = 0, pointRegionY1 = 0;
 };
 
 // Draws every primitive of `vertices` (in the order GL_<mode> defines).

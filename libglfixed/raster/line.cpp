@@ -243,9 +243,9 @@ bool setupLine(const RasterState& state, const Framebuffer& fb, const LineStyle&
   // The draw region: the framebuffer (and the scissor box, when there is one),
   // llvmpipe rows. A line is not cut at the viewport.
   const int height = fb.height();
-  const int64_t rx0 = std::max(0, state.lineRegionX0), rx1 = std::min(fb.width(), state.lineRegionX1) - 1;
-  const int64_t ry0 = std::max(0, height - state.lineRegionY1),
-                ry1 = std::min(height, height - state.lineRegionY0) - 1;
+  const WindowRegion& region = state.pointLineRegion;
+  const int64_t rx0 = std::max(0, region.x0), rx1 = std::min(fb.width(), region.x1) - 1;
+  const int64_t ry0 = std::max(0, height - region.y1), ry1 = std::min(height, height - region.y0) - 1;
   const int64_t cx0 = std::max(bx0, rx0), cx1 = std::min(bx1, rx1);
   const int64_t cy0 = std::max(by0, ry0), cy1 = std::min(by1, ry1);
   if (cx0 > cx1 || cy0 > cy1) return false;
@@ -276,41 +276,24 @@ bool setupLine(const RasterState& state, const Framebuffer& fb, const LineStyle&
 namespace {
 
 // One triangle of a smooth line, with the aaline stage's coverage attribute
-// (x across, z along the line) at its vertices; set up as llvmpipe's triangle
-// setup does (a clockwise triangle reordered keeping the provoking slot).
+// (x across, z along the line) at its vertices.
 void drawCoverageTriangle(const RasterState& state, Framebuffer& fb, const WindowVertex* v[3],
                           const float across[3], const float along[3], float halfWidth, float halfLength,
                           const float* flatVaryings) {
-  FixedTriangle f;
-  const int sign = snapTriangle(*v[0], *v[1], *v[2], f);
-  if (sign == 0) return;
-  int order[3] = {0, 1, 2};
-  if (sign < 0) {
-    if (state.firstVertexConvention) {
-      order[1] = 2, order[2] = 1;
-    } else {
-      order[0] = 1, order[1] = 0;
-    }
-  }
-  const FixedTriangle r = {{f.x[order[0]], f.x[order[1]], f.x[order[2]]},
-                           {f.y[order[0]], f.y[order[1]], f.y[order[2]]}};
-  const WindowVertex &a = *v[order[0]], &b = *v[order[1]], &c = *v[order[2]];
-  PrimitiveSetup t;
-  if (!setupTriangle(state, fb, r, a, b, c, flatVaryings, t)) return;
-  const PlaneSetup ps(a.x, a.y, b.x, b.y, c.x, c.y);
-  t.lineCoverage = true;
-  t.w = ps.plane(a.oneOverW, b.oneOverW, c.oneOverW);
-  const float* w[3] = {&a.oneOverW, &b.oneOverW, &c.oneOverW};
-  t.coverageX = ps.plane(across[order[0]] * *w[0], across[order[1]] * *w[1], across[order[2]] * *w[2]);
-  t.coverageZ = ps.plane(along[order[0]] * *w[0], along[order[1]] * *w[1], along[order[2]] * *w[2]);
-  t.coverageHalfWidth = halfWidth;
-  t.coverageHalfLength = halfLength;
-  // A line shorter than a pixel comes out fainter along its length, by
-  // length / halfLength (fitted to probes of 0.25, 0.5 and 0.75 pixel lines
-  // at eight sub-pixel offsets; longer lines are not scaled).
-  const float length = 2.0f * halfLength - 1.0f;
-  t.coverageAlongScale = length < halfLength ? length / halfLength : 1.0f;
-  shadePrimitive(state, fb, t);
+  drawStageTriangle(
+      state, fb, v, flatVaryings, [&](PrimitiveSetup& t, const PlaneSetup& ps, const int order[3]) {
+        const float w[3] = {v[order[0]]->oneOverW, v[order[1]]->oneOverW, v[order[2]]->oneOverW};
+        t.lineCoverage = true;
+        t.coverageX = ps.plane(across[order[0]] * w[0], across[order[1]] * w[1], across[order[2]] * w[2]);
+        t.coverageZ = ps.plane(along[order[0]] * w[0], along[order[1]] * w[1], along[order[2]] * w[2]);
+        t.coverageHalfWidth = halfWidth;
+        t.coverageHalfLength = halfLength;
+        // A line shorter than a pixel comes out fainter along its length, by
+        // length / halfLength (fitted to probes of 0.25, 0.5 and 0.75 pixel lines
+        // at eight sub-pixel offsets; longer lines are not scaled).
+        const float length = 2.0f * halfLength - 1.0f;
+        t.coverageAlongScale = length < halfLength ? length / halfLength : 1.0f;
+      });
 }
 
 }  // namespace
@@ -341,11 +324,7 @@ void drawSmoothLine(const RasterState& lineState, Framebuffer& fb, float width, 
   const float across[4] = {-halfWidth, halfWidth, -halfWidth, halfWidth};
   const float along[4] = {-halfLength, -halfLength, halfLength, halfLength};
   // The triangles are not clipped again: they are cut at the draw region.
-  RasterState state = lineState;
-  state.scissorX0 = state.lineRegionX0;
-  state.scissorY0 = state.lineRegionY0;
-  state.scissorX1 = state.lineRegionX1;
-  state.scissorY1 = state.lineRegionY1;
+  const RasterState state = cutAtPointLineRegion(lineState);
   const int tris[2][3] = {{2, 1, 0}, {3, 1, 2}};
   for (const auto& tri : tris) {
     const WindowVertex* v[3] = {&q[tri[0]], &q[tri[1]], &q[tri[2]]};

@@ -43,8 +43,8 @@ int pointWidthInPixels(float size) {
   return static_cast<int>(std::max<int64_t>(kFixedOne, fixed) >> kSubpixelBits);
 }
 
-bool setupPoint(const RasterState& state, const PointRegion& region, int framebufferHeight,
-                const WindowVertex& v, float size, const float* flatVaryings, PrimitiveSetup& t) {
+bool setupPoint(const RasterState& state, const Framebuffer& fb, const WindowVertex& v, float size,
+                const float* flatVaryings, PrimitiveSetup& t) {
   // The vertex in fixed point without the half-pixel shift triangles use;
   // y one unit up for GL's bottom-left fill convention (llvmpipe's `adj`).
   const int64_t x0 = snapPoint(v.x);
@@ -61,11 +61,14 @@ bool setupPoint(const RasterState& state, const PointRegion& region, int framebu
     bx = ((x0 + kFixedOne / 2) >> kSubpixelBits) - width / 2;
     by = ((y0 + kFixedOne / 2) >> kSubpixelBits) - width / 2;
   }
-  // The region, GL window space (y up), in llvmpipe rows (y down).
-  const int64_t rx0 = std::max(bx, int64_t(region.x0)),
-                rx1 = std::min(bx + width - 1, int64_t(region.x1) - 1);
-  const int64_t ry0 = std::max(by, int64_t(framebufferHeight) - region.y1);
-  const int64_t ry1 = std::min(by + width - 1, int64_t(framebufferHeight) - 1 - region.y0);
+  // The region cut to the buffer, GL window space (y up), in llvmpipe rows
+  // (y down).
+  const WindowRegion& region = state.pointLineRegion;
+  const int64_t height = fb.height();
+  const int64_t rx0 = std::max({bx, int64_t(region.x0), int64_t(0)}),
+                rx1 = std::min({bx + width - 1, int64_t(region.x1) - 1, int64_t(fb.width()) - 1});
+  const int64_t ry0 = std::max({by, height - region.y1, int64_t(0)});
+  const int64_t ry1 = std::min({by + width - 1, height - 1 - region.y0, height - 1});
   if (rx0 > rx1 || ry0 > ry1) return false;
   t.x0 = static_cast<int>(rx0);
   t.x1 = static_cast<int>(rx1);
@@ -93,51 +96,35 @@ bool setupPoint(const RasterState& state, const PointRegion& region, int framebu
   return true;
 }
 
-void drawPoint(const RasterState& state, Framebuffer& fb, const PointRegion& region, const WindowVertex& v,
-               float size, const float* flatVaryings) {
+void drawPoint(const RasterState& state, Framebuffer& fb, const WindowVertex& v, float size,
+               const float* flatVaryings) {
   PrimitiveSetup t;
-  if (!setupPoint(state, region, fb.height(), v, size, flatVaryings, t)) return;
+  if (!setupPoint(state, fb, v, size, flatVaryings, t)) return;
   shadePrimitive(state, fb, t);
 }
 
 namespace {
 
-// One triangle of the aapoint quad through llvmpipe's triangle set-up (no
-// culling: the stage binds a rasterizer state without it), with the
-// (s, t) planes of the aapoint shader.
+// One triangle of the aapoint quad (no culling: the stage binds a
+// rasterizer state without it), with the (s, t) planes of the aapoint shader.
 void drawSmoothPointTriangle(const RasterState& state, Framebuffer& fb, const WindowVertex* v[3],
                              const float st[3][2], float k, const float* flatVaryings) {
-  FixedTriangle f;
-  const int sign = snapTriangle(*v[0], *v[1], *v[2], f);
-  if (sign == 0) return;
-  int order[3] = {0, 1, 2};
-  if (sign < 0) {  // the swap llvmpipe makes to keep the provoking vertex in its slot (drawTriangle)
-    if (state.firstVertexConvention)
-      order[1] = 2, order[2] = 1;
-    else
-      order[0] = 1, order[1] = 0;
-  }
-  FixedTriangle r;
-  for (int i = 0; i < 3; ++i) r.x[i] = f.x[order[i]], r.y[i] = f.y[order[i]];
-  const WindowVertex& a = *v[order[0]];
-  const WindowVertex& b = *v[order[1]];
-  const WindowVertex& c = *v[order[2]];
-  PrimitiveSetup t;
-  if (!setupTriangle(state, fb, r, a, b, c, flatVaryings, t)) return;
-  const PlaneSetup ps(a.x, a.y, b.x, b.y, c.x, c.y);
-  // The w plane is needed even when every colour is flat.
-  t.w = ps.plane(a.oneOverW, b.oneOverW, c.oneOverW);
-  t.aaPoint = true;
-  t.aaS = ps.plane(st[order[0]][0] * a.oneOverW, st[order[1]][0] * b.oneOverW, st[order[2]][0] * c.oneOverW);
-  t.aaT = ps.plane(st[order[0]][1] * a.oneOverW, st[order[1]][1] * b.oneOverW, st[order[2]][1] * c.oneOverW);
-  t.aaK = k;
-  shadePrimitive(state, fb, t);
+  drawStageTriangle(state, fb, v, flatVaryings,
+                    [&](PrimitiveSetup& t, const PlaneSetup& ps, const int order[3]) {
+                      const WindowVertex &a = *v[order[0]], &b = *v[order[1]], &c = *v[order[2]];
+                      t.aaPoint = true;
+                      t.aaS = ps.plane(st[order[0]][0] * a.oneOverW, st[order[1]][0] * b.oneOverW,
+                                       st[order[2]][0] * c.oneOverW);
+                      t.aaT = ps.plane(st[order[0]][1] * a.oneOverW, st[order[1]][1] * b.oneOverW,
+                                       st[order[2]][1] * c.oneOverW);
+                      t.aaK = k;
+                    });
 }
 
 }  // namespace
 
-void drawSmoothPoint(const RasterState& state, Framebuffer& fb, const PointRegion& region,
-                     const WindowVertex& v, float radius, const float* flatVaryings) {
+void drawSmoothPoint(const RasterState& state, Framebuffer& fb, const WindowVertex& v, float radius,
+                     const float* flatVaryings) {
   // draw_pipe_aapoint.c, aapoint_point: k = (1 - 1/r)^2 computed as
   // 1 - 2/r + 1/r^2; the quad's corners at the centre -+ r, with (s, t) from
   // (-1, -1) to (1, 1); triangles (0, 1, 2) and (0, 2, 3).
@@ -150,9 +137,7 @@ void drawSmoothPoint(const RasterState& state, Framebuffer& fb, const PointRegio
   corner[3].x = v.x - radius, corner[3].y = v.y + radius;
   static const float st[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
   // The quad is not clipped: only the point's region bounds it.
-  RasterState inRegion = state;
-  inRegion.scissorX0 = region.x0, inRegion.scissorY0 = region.y0;
-  inRegion.scissorX1 = region.x1, inRegion.scissorY1 = region.y1;
+  const RasterState inRegion = cutAtPointLineRegion(state);
   const WindowVertex* first[3] = {&corner[0], &corner[1], &corner[2]};
   const float firstSt[3][2] = {{st[0][0], st[0][1]}, {st[1][0], st[1][1]}, {st[2][0], st[2][1]}};
   drawSmoothPointTriangle(inRegion, fb, first, firstSt, k, flatVaryings);

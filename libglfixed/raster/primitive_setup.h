@@ -79,6 +79,10 @@ struct ShadeTarget {
   bool depthWrite = true;
   GLenum depthFunc = GL_LESS;
   bool secondary = false;  // add varyings 4..6 to 0..2
+  // The polygon stipple the fragments pass (null: none): the setup's
+  // (triangles), or the state's for every primitive while Mesa's stipple
+  // shader stays bound (RasterState::stippleEveryPrimitive).
+  const uint32_t* stipple = nullptr;
 };
 
 // Bounding box, edges and planes of a triangle with positive snapped area;
@@ -92,15 +96,26 @@ bool setupTriangle(const RasterState& state, const Framebuffer& fb, const FixedT
 float polygonOffsetZ(const RasterState& state, int depthBits, const WindowVertex& v0, const WindowVertex& v1,
                      const WindowVertex& v2);
 // The square of a non-smooth point (raster/point.cpp); false when it covers
-// no pixel of `region`.
-bool setupPoint(const RasterState& state, const PointRegion& region, int framebufferHeight,
-                const WindowVertex& v, float size, const float* flatVaryings, PrimitiveSetup& out);
+// no pixel of the state's point and line region.
+bool setupPoint(const RasterState& state, const Framebuffer& fb, const WindowVertex& v, float size,
+                const float* flatVaryings, PrimitiveSetup& out);
 // The quadrilateral and planes of a line (raster/line.cpp); false when it
 // covers no pixel of the draw region.
 bool setupLine(const RasterState& state, const Framebuffer& fb, const LineStyle& style,
                const WindowVertex& v1, const WindowVertex& v2, const float* flatVaryings,
                PrimitiveSetup& out);
 ShadeTarget makeShadeTarget(const RasterState& state, Framebuffer& fb, const PrimitiveSetup& t);
+
+// `state` with the point and line region as its drawable box: the quads of
+// smooth points and lines are not clipped, only cut at that region.
+inline RasterState cutAtPointLineRegion(const RasterState& state) {
+  RasterState r = state;
+  r.scissorX0 = state.pointLineRegion.x0;
+  r.scissorY0 = state.pointLineRegion.y0;
+  r.scissorX1 = state.pointLineRegion.x1;
+  r.scissorY1 = state.pointLineRegion.y1;
+  return r;
+}
 
 // Shades every fragment of a set-up primitive (the AVX2 shader where the CPU
 // has it, else the scalar one).
@@ -109,6 +124,36 @@ void shadePrimitive(const RasterState& state, Framebuffer& fb, const PrimitiveSe
 // Polygon stipple of one GL row: bit 31 - (x % 32) is pixel x (GL 2.1 §3.6.2).
 inline uint32_t stippleRow(const uint32_t* stipple, int glY) { return stipple[glY & 31]; }
 inline bool stipplePasses(uint32_t row, int x) { return (row >> (31 - (x & 31))) & 1u; }
+
+// A triangle a draw-module stage makes (the quads of smooth points and smooth
+// lines), whichever way it faces: snapped, put in counter-clockwise order
+// keeping the provoking slot as drawTriangle does, set up with its 1/w plane
+// (the stage's shader needs it even when every colour is flat); then
+// `addPlanes(t, planes, order)` adds the stage's own planes, `order[i]` being
+// the input vertex in setup slot i, and it is shaded.
+template <typename AddPlanes>
+void drawStageTriangle(const RasterState& state, Framebuffer& fb, const WindowVertex* const v[3],
+                       const float* flatVaryings, AddPlanes&& addPlanes) {
+  FixedTriangle f;
+  const int sign = snapTriangle(*v[0], *v[1], *v[2], f);
+  if (sign == 0) return;
+  int order[3] = {0, 1, 2};
+  if (sign < 0) {
+    if (state.firstVertexConvention)
+      order[1] = 2, order[2] = 1;
+    else
+      order[0] = 1, order[1] = 0;
+  }
+  const FixedTriangle r = {{f.x[order[0]], f.x[order[1]], f.x[order[2]]},
+                           {f.y[order[0]], f.y[order[1]], f.y[order[2]]}};
+  const WindowVertex &a = *v[order[0]], &b = *v[order[1]], &c = *v[order[2]];
+  PrimitiveSetup t;
+  if (!setupTriangle(state, fb, r, a, b, c, flatVaryings, t)) return;
+  const PlaneSetup planes(a.x, a.y, b.x, b.y, c.x, c.y);
+  t.w = planes.plane(a.oneOverW, b.oneOverW, c.oneOverW);
+  addPlanes(t, planes, order);
+  shadePrimitive(state, fb, t);
+}
 
 // Calls span(py, lo, hi) for every row of the primitive with pixels inside,
 // [lo, hi] being exactly the pixels inside on that row. (shade_avx2.cpp has

@@ -24,6 +24,11 @@ struct WindowVertex {
   float varying[kMaxVaryings] = {};
 };
 
+// A rectangle of pixels in GL window coordinates (y up), [x0, x1) x [y0, y1).
+struct WindowRegion {
+  int x0 = 0, y0 = 0, x1 = 1 << 30, y1 = 1 << 30;
+};
+
 struct RasterState {
   bool depthTest = false;
   GLenum depthFunc = GL_LESS;
@@ -59,11 +64,11 @@ struct RasterState {
   // Stipple lines and points too (Mesa's stipple shader left bound after a
   // filled polygon: primitive/batch_context.h, PolygonPipeline).
   bool stippleEveryPrimitive = false;
-  // Lines (raster/line.cpp): llvmpipe draws a line wherever it falls in its
-  // draw region, the framebuffer (cut by the scissor box when there is one),
-  // not in the viewport: [lineRegionX0, lineRegionX1) x [lineRegionY0,
-  // lineRegionY1) in GL window coordinates, further cut to the buffer.
-  int lineRegionX0 = 0, lineRegionY0 = 0, lineRegionX1 = 1 << 30, lineRegionY1 = 1 << 30;
+  // Points and lines (raster/point.cpp, line.cpp): llvmpipe draws them
+  // wherever they fall in its draw region, the framebuffer cut by the scissor
+  // box when there is one, not in the viewport (a wide point or line spills
+  // past the viewport edge); always further cut to the buffer.
+  WindowRegion pointLineRegion;
 };
 
 // Snaps the three vertices to llvmpipe's 1/256 grid (fixed_point.h) and
@@ -87,23 +92,17 @@ void rasterCcwTriangle(const RasterState& state, Framebuffer& fb, const FixedTri
 void drawTriangle(const RasterState& state, Framebuffer& fb, const WindowVertex& v0, const WindowVertex& v1,
                   const WindowVertex& v2, const float* flatVaryings);
 
-// Points (raster/point.cpp). The pixels a point may cover, in GL window
-// coordinates (y up), [x0, x1) x [y0, y1): llvmpipe clips points to the
-// framebuffer (and scissor), not to the viewport.
-struct PointRegion {
-  int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
-};
-// The width in pixels llvmpipe gives a non-smooth point of `size`: rounded,
+// Points (raster/point.cpp). The width in pixels llvmpipe gives a non-smooth point of `size`: rounded,
 // .5 down, at least 1, at most 255; a NaN size is 1.
 int pointWidthInPixels(float size);
 // A non-smooth, non-sprite point at `v` (llvmpipe's window space) of `size`;
 // `flatVaryings` as for drawTriangle.
-void drawPoint(const RasterState& state, Framebuffer& fb, const PointRegion& region, const WindowVertex& v,
-               float size, const float* flatVaryings);
+void drawPoint(const RasterState& state, Framebuffer& fb, const WindowVertex& v, float size,
+               const float* flatVaryings);
 // A GL_POINT_SMOOTH point of `radius` (Mesa's draw module makes it a quad of
 // two triangles with a coverage shader: raster/point.cpp).
-void drawSmoothPoint(const RasterState& state, Framebuffer& fb, const PointRegion& region, const WindowVertex& v,
-                     float radius, const float* flatVaryings);
+void drawSmoothPoint(const RasterState& state, Framebuffer& fb, const WindowVertex& v, float radius,
+                     const float* flatVaryings);
 // How llvmpipe's line set-up draws a line (lp_setup_line.c): `width` as the
 // rasterizer state has it (glLineWidth clamped to Mesa's range); aliased
 // lines round it, rectangular ones (GL_LINE_SMOOTH) use it as it is.

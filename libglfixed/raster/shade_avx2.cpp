@@ -73,6 +73,7 @@ GLFIXED_AVX2 void shadePrimitiveAvx2(const PrimitiveSetup& t, const ShadeTarget&
   const GLenum depthFunc = s.depthFunc;
   const bool anyColor = s.anyColor;
   const bool secondary = s.secondary;
+  const uint32_t* const stipplePattern = s.stipple;
   const bool flatPrimary = t.flatPrimary, flatSecondary = t.flatSecondary;
   // Every colour flat: the same bytes for every fragment (not under the
   // coverage of a smooth line, which changes alpha).
@@ -119,7 +120,7 @@ GLFIXED_AVX2 void shadePrimitiveAvx2(const PrimitiveSetup& t, const ShadeTarget&
     uint8_t* const colorRow = color.pixel(0, glY);
     uint32_t* const depth32 = depth32Base ? depth32Base + size_t(glY) * depthWidth : nullptr;
     uint16_t* const depth16 = depth16Base ? depth16Base + size_t(glY) * depthWidth : nullptr;
-    const uint32_t stipple = t.stipple ? stippleRow(t.stipple, glY) : ~0u;
+    const uint32_t stipple = stipplePattern ? stippleRow(stipplePattern, glY) : ~0u;
     for (int x = lo; x <= hi; x += 8) {
       const int n = hi - x + 1 < 8 ? hi - x + 1 : 8;
       const bool full = n == 8;

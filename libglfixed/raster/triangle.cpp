@@ -38,7 +38,7 @@ void shadeSpanScalar(const PrimitiveSetup& t, const ShadeTarget& s, int py, int 
       s.depthBits == 24 ? static_cast<uint32_t*>(s.depth) + size_t(glY) * s.depthWidth : nullptr;
   uint16_t* depth16 =
       s.depthBits == 16 ? static_cast<uint16_t*>(s.depth) + size_t(glY) * s.depthWidth : nullptr;
-  const uint32_t stipple = t.stipple ? stippleRow(t.stipple, glY) : ~0u;
+  const uint32_t stipple = s.stipple ? stippleRow(s.stipple, glY) : ~0u;
   for (int px = lo; px <= hi; ++px) {
     const float fpx = static_cast<float>(px);
     if (!stipplePasses(stipple, px)) continue;  // polygon stipple: the fragment is discarded
@@ -118,6 +118,7 @@ ShadeTarget makeShadeTarget(const RasterState& state, Framebuffer& fb, const Pri
     s.depthFunc = state.depthFunc;
   }
   s.secondary = t.varyingCount == 8;
+  s.stipple = t.stipple ? t.stipple : (state.stippleEveryPrimitive ? state.polygonStipple : nullptr);
   return s;
 }
 
@@ -190,15 +191,7 @@ bool setupTriangle(const RasterState& state, const Framebuffer& fb, const FixedT
   return true;
 }
 
-void shadePrimitive(const RasterState& state, Framebuffer& fb, const PrimitiveSetup& setup) {
-  PrimitiveSetup stippled;
-  const PrimitiveSetup* chosen = &setup;
-  if (state.stippleEveryPrimitive && state.polygonStipple && !setup.stipple) {
-    stippled = setup;
-    stippled.stipple = state.polygonStipple;
-    chosen = &stippled;
-  }
-  const PrimitiveSetup& t = *chosen;
+void shadePrimitive(const RasterState& state, Framebuffer& fb, const PrimitiveSetup& t) {
   const ShadeTarget target = makeShadeTarget(state, fb, t);
   if (kUseAvx2 && !t.aaPoint)  // smooth points: the scalar shader only (primitive_setup.h)
     shadePrimitiveAvx2(t, target);

@@ -211,13 +211,15 @@ TEST(DrawPrimitives, BehindTheEyeAndPastTheFarPlane) {
   EXPECT_EQ(far.surface.coveredCount(), 0);
 }
 
-TEST(DrawPrimitives, PointsDrawNothingYet) {
+// Size-1 points inside the view cover one pixel each (the region points
+// may cover defaults to the whole buffer).
+TEST(DrawPrimitives, PointsCoverOnePixelEach) {
   Scene s;
-  s.add(-1, -1, 0);
-  s.add(1, -1, 1);
-  s.add(-1, 1, 2);
+  s.add(-0.5f, -0.5f, 0);
+  s.add(0.5f, -0.5f, 1);
+  s.add(-0.5f, 0.5f, 2);
   s.draw(GL_POINTS);
-  EXPECT_EQ(s.surface.coveredCount(), 0);
+  EXPECT_EQ(s.surface.coveredCount(), 3);
 }
 
 // A 16x16 view: the loop around the lower-left half draws its three edges

@@ -61,8 +61,6 @@ int main(int argc, char** argv) {
     ps.raster.scissorY0 = std::max(0, ps.viewportY);
     ps.raster.scissorX1 = std::min(W, ps.viewportX + ps.viewportWidth);
     ps.raster.scissorY1 = std::min(H, ps.viewportY + ps.viewportHeight);
-    ps.pointRegionX1 = W;  // as pipeline/draw.cpp: points may cover the whole buffer
-    ps.pointRegionY1 = H;
     primitive::drawPrimitives(ps, pending, fb);
     havePending = false;
   };

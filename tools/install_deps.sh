@@ -5,6 +5,7 @@ set -euo pipefail
 packages=(
   build-essential cmake pkg-config python3
   libglm-dev libgtest-dev libpng-dev
+  libx11-dev libxext-dev            # GLX and EGL windows: Xlib and MIT-SHM
   libosmesa6-dev libglu1-mesa-dev libgl-dev  # Mesa's OSMesa and GL headers: the reference
   khronos-api                       # gl.xml, for tools/gen_gl_header.py
 )

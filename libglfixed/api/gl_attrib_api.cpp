@@ -20,7 +20,10 @@ GLAPI void APIENTRY glPushAttrib(GLbitfield mask) {
 GLAPI void APIENTRY glPopAttrib(void) {
   if (api::compiled(&glPopAttrib)) return;
   Context* ctx = api::contextFlushed();
-  if (ctx && !ctx->attribStack.pop(*ctx)) ctx->recordError(GL_STACK_UNDERFLOW);
+  if (!ctx) return;
+  if (!ctx->attribStack.pop(*ctx)) return ctx->recordError(GL_STACK_UNDERFLOW);
+  // The draw and read buffers may have been restored.
+  ctx->framebuffer.selectBuffers(ctx->colorBuffer.drawBuffer, ctx->pixelMode.readBuffer);
 }
 
 }  // extern "C"

@@ -63,10 +63,14 @@ GLAPI void APIENTRY glClear(GLbitfield mask) {
     return;
   }
   Framebuffer& fb = ctx->framebuffer;
-  if (!fb.bound()) return;
+  if (!fb.hasSurface()) return;
   bool byQuad = false;
   const PixelBox box = clearBox(*ctx, &byQuad);
-  if (mask & GL_COLOR_BUFFER_BIT) clearColor(fb, ctx->colorBuffer, box);
+  if (mask & GL_COLOR_BUFFER_BIT) {
+    clearColor(fb.color, ctx->colorBuffer, box);
+    if (fb.buffersNamed(ctx->colorBuffer.drawBuffer, false) == Framebuffer::Buffers::kBoth)
+      clearColor(fb.front, ctx->colorBuffer, box);
+  }
   if ((mask & GL_DEPTH_BUFFER_BIT) && ctx->depth.writeMask && fb.depth.bits() > 0) {
     if (byQuad)
       clearDepth(fb, quadClearDepth(ctx->depth.clearDepth, fb.depth.bits()), box);
@@ -137,6 +141,39 @@ GLAPI void APIENTRY glPixelStorei(GLenum pname, GLint param) {
 
 GLAPI void APIENTRY glPixelStoref(GLenum pname, GLfloat param) {
   glPixelStorei(pname, mesaRoundToInt(param));
+}
+
+
+// The colour buffers of the window-system surface (GL 2.1 §4.2.1, §4.3.2),
+// with Mesa's rules (Framebuffer::buffersNamed): an unknown name is
+// GL_INVALID_ENUM, a buffer the surface lacks GL_INVALID_OPERATION; the name
+// is kept as given (GL_BACK stays GL_BACK on a single-buffered surface).
+namespace {
+
+bool colorBufferNameError(Context& ctx, GLenum buffer, bool forReading) {
+  switch (ctx.framebuffer.buffersNamed(buffer, forReading)) {
+    case Framebuffer::Buffers::kUnknown: ctx.recordError(GL_INVALID_ENUM); return true;
+    case Framebuffer::Buffers::kMissing: ctx.recordError(GL_INVALID_OPERATION); return true;
+    default: return false;
+  }
+}
+
+}  // namespace
+
+GLAPI void APIENTRY glDrawBuffer(GLenum buf) {
+  if (api::compiled(&glDrawBuffer, buf)) return;
+  Context* ctx = api::contextForSetter();
+  if (!ctx || colorBufferNameError(*ctx, buf, false)) return;
+  if (api::setState(*ctx, ctx->colorBuffer.drawBuffer, buf, GL_COLOR_BUFFER_BIT))
+    ctx->framebuffer.selectBuffers(ctx->colorBuffer.drawBuffer, ctx->pixelMode.readBuffer);
+}
+
+GLAPI void APIENTRY glReadBuffer(GLenum src) {
+  if (api::compiled(&glReadBuffer, src)) return;
+  Context* ctx = api::contextForSetter();
+  if (!ctx || colorBufferNameError(*ctx, src, true)) return;
+  if (api::setState(*ctx, ctx->pixelMode.readBuffer, src, GL_PIXEL_MODE_BIT))
+    ctx->framebuffer.selectBuffers(ctx->colorBuffer.drawBuffer, ctx->pixelMode.readBuffer);
 }
 
 }  // extern "C"

@@ -140,7 +140,7 @@ bool queryHeldState(Context& ctx, GLenum pname, StateValue& out) {
 // The core's own state. False: not one of its pnames.
 bool queryCoreState(Context& ctx, GLenum pname, StateValue& out) {
   const Framebuffer& fb = ctx.framebuffer;
-  const bool hasAlpha = fb.color.alpha >= 0;
+  const bool hasAlpha = fb.front.alpha >= 0;
   switch (pname) {
     case GL_MATRIX_MODE: out.set({double(ctx.transform.matrixMode)}); return true;
     case GL_MODELVIEW_MATRIX: out.setMatrix(ctx.modelview.top()); return true;
@@ -234,7 +234,8 @@ bool queryCoreState(Context& ctx, GLenum pname, StateValue& out) {
       out.set({0.0});
       return true;
     case GL_RGBA_MODE: out.set({1.0}); return true;
-    case GL_INDEX_MODE: case GL_DOUBLEBUFFER: case GL_STEREO: out.set({0.0}); return true;
+    case GL_DOUBLEBUFFER: out.set({fb.doubleBuffered() ? 1.0 : 0.0}); return true;
+    case GL_INDEX_MODE: case GL_STEREO: out.set({0.0}); return true;
     case GL_PACK_ALIGNMENT: out.set({double(ctx.pixelStore.packAlignment)}); return true;
     case GL_PACK_ROW_LENGTH: out.set({double(ctx.pixelStore.packRowLength)}); return true;
     case GL_PACK_SKIP_PIXELS: out.set({double(ctx.pixelStore.packSkipPixels)}); return true;

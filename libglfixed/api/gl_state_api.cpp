@@ -91,6 +91,12 @@ GLAPI void APIENTRY glViewport(GLint x, GLint y, GLsizei width, GLsizei height) 
   v.width = std::min(width, kMaxViewportSize);
   v.height = std::min(height, kMaxViewportSize);
   api::setState(*ctx, ctx->viewport, v, GL_VIEWPORT_BIT);
+  // Where Mesa's X11 drivers look at the window's size again (drisw's
+  // invalidate_on_gl_viewport): a resized window gets buffers of its size.
+  if (SurfaceHooks* surface = ctx->framebuffer.surface) {
+    pipeline::flushVertices(*ctx);
+    surface->viewportChanged();
+  }
 }
 
 // Clip planes and scissor: the scissor box (GL 2.1 §4.1.2), stored as given;
@@ -213,7 +219,19 @@ GLAPI void APIENTRY glHint(GLenum target, GLenum mode) {
 }
 
 // Rendering is synchronous: every command has completed when it returns.
-GLAPI void APIENTRY glFlush(void) { api::contextFlushed(); }
-GLAPI void APIENTRY glFinish(void) { api::contextFlushed(); }
+// What was drawn into a window's front buffer reaches the screen here (GL 2.1
+// §5.5); a double-buffered window shows its back buffer at the swap.
+namespace {
+void flushToSurface() {
+  Context* ctx = api::contextFlushed();
+  if (!ctx || !ctx->framebuffer.surface) return;
+  const Framebuffer& fb = ctx->framebuffer;
+  const bool frontDrawn = fb.color.pixels == fb.front.pixels ||
+                          fb.buffersNamed(ctx->colorBuffer.drawBuffer, false) == Framebuffer::Buffers::kBoth;
+  if (frontDrawn) fb.surface->frontBufferFlushed();
+}
+}  // namespace
+GLAPI void APIENTRY glFlush(void) { flushToSurface(); }
+GLAPI void APIENTRY glFinish(void) { flushToSurface(); }
 
 }  // extern "C"

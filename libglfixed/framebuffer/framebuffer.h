@@ -1,7 +1,11 @@
-// The drawing surface: a client colour buffer (the memory an OSMesa program
-// hands to OSMesaMakeCurrent, in one of its pixel formats) and the depth buffer
-// the context owns. Window coordinates: (0,0) is the lower left pixel.
+// The drawing surface as a context sees it: colour buffers (the memory an
+// OSMesa program hands to OSMesaMakeCurrent, in one of its pixel formats, or
+// the front and back buffers of a GLX or EGL surface, which the platform layer
+// owns) and the depth buffer the context owns. Window coordinates: (0,0) is
+// the lower left pixel.
 #pragma once
+
+#include <GL/gl.h>
 
 #include <cstddef>
 #include <cstdint>
@@ -9,7 +13,9 @@
 
 namespace glfixed {
 
-enum class PixelFormat { kRGBA, kBGRA, kARGB, kRGB, kBGR };
+// kBGRX: the 32-bit pixels of a depth-24 X11 TrueColor image (blue, green,
+// red, one unused byte): a window without alpha bits.
+enum class PixelFormat { kRGBA, kBGRA, kARGB, kRGB, kBGR, kBGRX };
 
 struct ColorBuffer {
   uint8_t* pixels = nullptr;  // client memory, not owned
@@ -73,12 +79,46 @@ class DepthBuffer {
   std::vector<uint32_t> d32_;
 };
 
+// The window-system surface behind a framebuffer (platform/surface.h), told
+// what GL 2.1 leaves to the window system: glFlush and glFinish must bring
+// what was drawn into the front buffer to the screen, and glViewport is where
+// Mesa's X11 drivers look at the window's size again.
+class SurfaceHooks {
+ public:
+  virtual ~SurfaceHooks() = default;
+  virtual void frontBufferFlushed() = 0;
+  virtual void viewportChanged() = 0;
+};
+
 struct Framebuffer {
-  ColorBuffer color;
+  // Views of the surface's colour buffers; back.pixels is null when the
+  // surface is single-buffered (OSMesa's always is). The read surface may be
+  // another one (glXMakeContextCurrent): readFront and readBack.
+  ColorBuffer front, back;
+  ColorBuffer readFront, readBack;
+  // The draw buffer (GL 2.1 §4.2.1) and the read buffer (§4.3.2), chosen by
+  // selectBuffers from glDrawBuffer and glReadBuffer; pixels is null for
+  // GL_NONE. Every stage draws into `color`; glReadPixels reads `read`.
+  ColorBuffer color, read;
   DepthBuffer depth;
+  SurfaceHooks* surface = nullptr;      // the draw surface; null for OSMesa
+  SurfaceHooks* readSurface = nullptr;  // the read surface
+
   bool bound() const { return color.pixels != nullptr; }
-  int width() const { return color.width; }
-  int height() const { return color.height; }
+  bool hasSurface() const { return front.pixels != nullptr; }
+  bool doubleBuffered() const { return back.pixels != nullptr; }
+  int width() const { return front.width; }
+  int height() const { return front.height; }
+  // The buffers GL_FRONT, GL_BACK, GL_LEFT... name here, as Mesa resolves
+  // them (buffers.c): on a single-buffered surface every back buffer is the
+  // front one; GL_LEFT and GL_FRONT_AND_BACK draw into both buffers but read
+  // the front; there is no stereo and no auxiliary buffer (kMissing: an
+  // invalid operation), and an unknown name is kUnknown (an invalid enum).
+  enum class Buffers { kUnknown, kMissing, kNone, kFront, kBack, kBoth };
+  Buffers buffersNamed(GLenum buffer, bool forReading) const;
+  // Points `color` and `read` at the buffers GL state names. kBoth draws
+  // into the back buffer only for now (glClear clears both).
+  void selectBuffers(GLenum drawBuffer, GLenum readBuffer);
 };
 
 // Float [0,1] to an n-bit unsigned value as llvmpipe does it: a single-precision

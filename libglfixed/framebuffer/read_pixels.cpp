@@ -11,8 +11,8 @@ void clearDepth(Framebuffer& fb, uint32_t value, const PixelBox& box) {
     for (int x = std::max(box.x0, 0); x < std::min(box.x1, fb.depth.width()); ++x) fb.depth.set(x, y, value);
 }
 
-void clearColor(Framebuffer& fb, const ColorBufferAttrib& cb, const PixelBox& box) {
-  const ColorBuffer& c = fb.color;
+void clearColor(const ColorBuffer& c, const ColorBufferAttrib& cb, const PixelBox& box) {
+  if (!c.pixels) return;
   uint8_t value[4];
   for (int i = 0; i < 4; ++i) value[i] = floatToUnorm8(cb.clearColor[i]);
   const bool allChannels = cb.writeMask[0] && cb.writeMask[1] && cb.writeMask[2] && cb.writeMask[3];
@@ -124,7 +124,9 @@ GLenum readPixels(const Framebuffer& fb, const PixelStoreAttrib& pack, GLint x, 
   if (format == GL_DEPTH_COMPONENT && fb.depth.bits() == 0) return GL_INVALID_OPERATION;
   if (isPacked8888(type) && format != GL_RGBA && format != GL_BGRA) return GL_INVALID_OPERATION;
   if (!isPacked8888(type) && bytesOf(type) == 0) return GL_INVALID_OPERATION;  // other packed types: not yet
-  if (!fb.bound() || !pixels || width == 0 || height == 0) return GL_NO_ERROR;
+  // Mesa: colour from a read buffer of GL_NONE is an invalid operation.
+  if (format != GL_DEPTH_COMPONENT && fb.hasSurface() && !fb.read.pixels) return GL_INVALID_OPERATION;
+  if (!fb.hasSurface() || !pixels || width == 0 || height == 0) return GL_NO_ERROR;
 
   const int components = componentsOf(format);
   const int componentBytes = isPacked8888(type) ? 1 : bytesOf(type);
@@ -144,8 +146,10 @@ GLenum readPixels(const Framebuffer& fb, const PixelStoreAttrib& pack, GLint x, 
     last = static_cast<int>(std::clamp<int64_t>(int64_t{size} - origin, first, count));
   };
   int row0, row1, col0, col1;
-  inside(y, height, fb.height(), row0, row1);
-  inside(x, width, fb.width(), col0, col1);
+  // The read buffer may be another surface's (glXMakeContextCurrent).
+  const bool depth = format == GL_DEPTH_COMPONENT;
+  inside(y, height, depth ? fb.depth.height() : fb.read.height, row0, row1);
+  inside(x, width, depth ? fb.depth.width() : fb.read.width, col0, col1);
   for (int row = row0; row < row1; ++row) {
     const int wy = y + row;
     uint8_t* dstRow = base + row * rowBytes;
@@ -165,7 +169,7 @@ GLenum readPixels(const Framebuffer& fb, const PixelStoreAttrib& pack, GLint x, 
         continue;
       }
       uint8_t rgba[4];
-      fb.color.read(wx, wy, rgba);
+      fb.read.read(wx, wy, rgba);
       if (isPacked8888(type)) {
         // 8_8_8_8: the first component in the highest byte; _REV: in the lowest.
         const uint8_t c[4] = {format == GL_BGRA ? rgba[2] : rgba[0], rgba[1], format == GL_BGRA ? rgba[0] : rgba[2],

@@ -17,7 +17,7 @@ struct PixelBox {
 
 // glClear of the colour buffer: the pixels of `box` (inside the buffer),
 // honouring the colour write mask.
-void clearColor(Framebuffer& fb, const ColorBufferAttrib& colorBuffer, const PixelBox& box);
+void clearColor(const ColorBuffer& buffer, const ColorBufferAttrib& colorBuffer, const PixelBox& box);
 // glClear of the depth buffer: `value` into the pixels of `box`.
 void clearDepth(Framebuffer& fb, uint32_t value, const PixelBox& box);
 

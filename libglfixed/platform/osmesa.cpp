@@ -45,6 +45,7 @@ GLenum osmesaFormatOf(PixelFormat f) {
     case PixelFormat::kARGB: return OSMESA_ARGB;
     case PixelFormat::kRGB: return OSMESA_RGB;
     case PixelFormat::kBGR: return OSMESA_BGR;
+    case PixelFormat::kBGRX: break;  // a window's format, never OSMesa's
   }
   return OSMESA_RGBA;
 }
@@ -63,13 +64,19 @@ int depthBitsFor(GLint depthBits, GLint stencilBits) {
 // Points the context's colour buffer at the client memory with the current
 // pixel-store settings.
 void bindColorBuffer(osmesa_context& c, void* buffer) {
-  glfixed::ColorBuffer& cb = c.context.framebuffer.color;
+  glfixed::Framebuffer& fb = c.context.framebuffer;
+  glfixed::ColorBuffer& cb = fb.front;
   cb.setFormat(c.format);
   cb.pixels = static_cast<uint8_t*>(buffer);
   cb.width = c.width;
   cb.height = c.height;
   cb.rowLength = c.userRowLength > 0 ? c.userRowLength : c.width;
   cb.yUp = c.yUp;
+  fb.back = glfixed::ColorBuffer{};  // OSMesa buffers are single-buffered
+  fb.readFront = cb;
+  fb.readBack = fb.back;
+  fb.surface = fb.readSurface = nullptr;
+  fb.selectBuffers(c.context.colorBuffer.drawBuffer, c.context.pixelMode.readBuffer);
 }
 
 }  // namespace
@@ -125,7 +132,7 @@ GLAPI void APIENTRY OSMesaDestroyContext(OSMesaContext ctx) {
   glfixed::pipeline::flushVertices(ctx->context);
   if (tCurrent == ctx) {
     tCurrent = nullptr;
-    glfixed::setCurrentContext(nullptr);
+    if (glfixed::currentContext() == &ctx->context) glfixed::setCurrentContext(nullptr);
   }
   delete ctx;
 }
@@ -165,10 +172,13 @@ GLAPI GLboolean APIENTRY OSMesaMakeCurrent(OSMesaContext ctx, void* buffer, GLen
   return GL_TRUE;
 }
 
-GLAPI OSMesaContext APIENTRY OSMesaGetCurrentContext(void) { return tCurrent; }
+// Null when a GLX or EGL context was made current on this thread since.
+GLAPI OSMesaContext APIENTRY OSMesaGetCurrentContext(void) {
+  return tCurrent && glfixed::currentContext() == &tCurrent->context ? tCurrent : nullptr;
+}
 
 GLAPI void APIENTRY OSMesaPixelStore(GLint pname, GLint value) {
-  osmesa_context* c = tCurrent;
+  osmesa_context* c = OSMesaGetCurrentContext();
   if (!c) return;
   switch (pname) {
     case OSMESA_ROW_LENGTH:
@@ -185,11 +195,11 @@ GLAPI void APIENTRY OSMesaPixelStore(GLint pname, GLint value) {
       c->context.recordError(GL_INVALID_ENUM);
       return;
   }
-  bindColorBuffer(*c, c->context.framebuffer.color.pixels);
+  bindColorBuffer(*c, c->context.framebuffer.front.pixels);
 }
 
 GLAPI void APIENTRY OSMesaGetIntegerv(GLint pname, GLint* value) {
-  osmesa_context* c = tCurrent;
+  osmesa_context* c = OSMesaGetCurrentContext();
   if (!value) return;
   switch (pname) {
     case OSMESA_MAX_WIDTH: case OSMESA_MAX_HEIGHT: *value = glfixed::kMaxViewportSize; return;
@@ -227,7 +237,7 @@ GLAPI GLboolean APIENTRY OSMesaGetDepthBuffer(OSMesaContext c, GLint* width, GLi
 
 GLAPI GLboolean APIENTRY OSMesaGetColorBuffer(OSMesaContext c, GLint* width, GLint* height, GLint* format,
                                               void** buffer) {
-  if (!c || !c->context.framebuffer.color.pixels) {
+  if (!c || !c->context.framebuffer.front.pixels) {
     if (width) *width = 0;
     if (height) *height = 0;
     if (format) *format = 0;
@@ -238,7 +248,7 @@ GLAPI GLboolean APIENTRY OSMesaGetColorBuffer(OSMesaContext c, GLint* width, GLi
   if (width) *width = c->width;
   if (height) *height = c->height;
   if (format) *format = static_cast<GLint>(osmesaFormatOf(c->format));
-  if (buffer) *buffer = c->context.framebuffer.color.pixels;
+  if (buffer) *buffer = c->context.framebuffer.front.pixels;
   return GL_TRUE;
 }
 

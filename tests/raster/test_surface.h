@@ -19,6 +19,7 @@ struct TestSurface {
     fb.color.height = height;
     fb.color.rowLength = width;
     fb.color.setFormat(PixelFormat::kRGBA);
+    fb.front = fb.readFront = fb.color;
     fb.depth.resize(width, height, depthBits);
     if (depthBits) fb.depth.fill(fb.depth.maxValue());
   }

@@ -77,6 +77,7 @@ int main(int argc, char** argv) {
       fb.color.height = H;
       fb.color.rowLength = W;
       fb.color.setFormat(PixelFormat::kRGBA);
+      fb.front = fb.readFront = fb.color;
       fb.depth.resize(W, H, depthBits);
       ps.viewportX = 0;
       ps.viewportY = 0;

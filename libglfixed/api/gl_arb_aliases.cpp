@@ -1,6 +1,7 @@
 // The ARB and EXT names legacy programs call for the vertex array and buffer
 // object commands (ARB_vertex_buffer_object, EXT_draw_range_elements,
-// EXT_multi_draw_arrays, ARB_multitexture's glClientActiveTextureARB): the
+// EXT_multi_draw_arrays, ARB_multitexture's glClientActiveTextureARB,
+// ARB/EXT_point_parameters, ARB_transpose_matrix): the
 // same functions under their extension names, exported and known to
 // OSMesaGetProcAddress. Mesa's gl.h/glext.h declare them; ours does not.
 #include <GL/gl.h>
@@ -46,6 +47,18 @@ GLAPI void APIENTRY glMultiDrawElementsEXT(GLenum mode, const GLsizei* count, GL
 }
 GLAPI void APIENTRY glClientActiveTextureARB(GLenum texture) { glClientActiveTexture(texture); }
 
+// ARB_point_parameters, EXT_point_parameters.
+GLAPI void APIENTRY glPointParameterfARB(GLenum pname, GLfloat param) { glPointParameterf(pname, param); }
+GLAPI void APIENTRY glPointParameterfvARB(GLenum pname, const GLfloat* params) { glPointParameterfv(pname, params); }
+GLAPI void APIENTRY glPointParameterfEXT(GLenum pname, GLfloat param) { glPointParameterf(pname, param); }
+GLAPI void APIENTRY glPointParameterfvEXT(GLenum pname, const GLfloat* params) { glPointParameterfv(pname, params); }
+
+// ARB_transpose_matrix.
+GLAPI void APIENTRY glLoadTransposeMatrixfARB(const GLfloat* m) { glLoadTransposeMatrixf(m); }
+GLAPI void APIENTRY glLoadTransposeMatrixdARB(const GLdouble* m) { glLoadTransposeMatrixd(m); }
+GLAPI void APIENTRY glMultTransposeMatrixfARB(const GLfloat* m) { glMultTransposeMatrixf(m); }
+GLAPI void APIENTRY glMultTransposeMatrixdARB(const GLdouble* m) { glMultTransposeMatrixd(m); }
+
 }  // extern "C"
 
 namespace glfixed::api {
@@ -67,6 +80,10 @@ const Alias kAliases[] = {
     GLFX_ALIAS(glGetBufferPointervARB),   GLFX_ALIAS(glDrawRangeElementsEXT),
     GLFX_ALIAS(glMultiDrawArraysEXT),     GLFX_ALIAS(glMultiDrawElementsEXT),
     GLFX_ALIAS(glClientActiveTextureARB),
+    GLFX_ALIAS(glPointParameterfARB),     GLFX_ALIAS(glPointParameterfvARB),
+    GLFX_ALIAS(glPointParameterfEXT),     GLFX_ALIAS(glPointParameterfvEXT),
+    GLFX_ALIAS(glLoadTransposeMatrixfARB), GLFX_ALIAS(glLoadTransposeMatrixdARB),
+    GLFX_ALIAS(glMultTransposeMatrixfARB), GLFX_ALIAS(glMultTransposeMatrixdARB),
 };
 #undef GLFX_ALIAS
 }  // namespace

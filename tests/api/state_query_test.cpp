@@ -3,7 +3,10 @@
 // a piece of state and the type a query returns.
 #include <climits>
 #include <cstring>
+#include <map>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include "gl_test_fixture.h"
 
@@ -446,7 +449,8 @@ TEST_F(StateQueryTest, GetStrings) {
     // Mesa is a "4.5 (Compatibility Profile) Mesa ..." context.
     EXPECT_TRUE(version[0] >= '2' && version[0] <= '9' && version[1] == '.') << version;
   } else {
-    EXPECT_EQ(std::string(version).substr(0, 3), "2.1") << version;
+    // No GLSL: the last version without shaders (api/gl_version.h).
+    EXPECT_EQ(std::string(version).substr(0, 3), "1.5") << version;
     // §6.1.11: "major.minor" or "major.minor.release", then a space and vendor text.
     EXPECT_TRUE(version[3] == '\0' || version[3] == ' ' || version[3] == '.') << version;
   }
@@ -462,6 +466,50 @@ TEST_F(StateQueryTest, GetStrings) {
   // The same pointer's text stays valid and unchanged.
   EXPECT_STREQ(reinterpret_cast<const char*>(glGetString(GL_VERSION)), version);
   EXPECT_NO_GL_ERROR();
+}
+
+// "Say only what is true": every extension the library advertises has all
+// its commands behind GetProcAddress; shaders have none (there is no GLSL),
+// and GL_SHADING_LANGUAGE_VERSION is not a name of a GL 1.5 context.
+TEST_F(StateQueryTest, AdvertisedExtensionsHaveTheirCommands) {
+  const std::map<std::string, std::vector<const char*>> commands = {
+      {"GL_ARB_point_parameters", {"glPointParameterfARB", "glPointParameterfvARB"}},
+      {"GL_EXT_point_parameters", {"glPointParameterfEXT", "glPointParameterfvEXT"}},
+      {"GL_ARB_provoking_vertex", {"glProvokingVertex"}},
+      {"GL_EXT_provoking_vertex", {"glProvokingVertexEXT"}},
+      {"GL_ARB_transpose_matrix",
+       {"glLoadTransposeMatrixfARB", "glLoadTransposeMatrixdARB", "glMultTransposeMatrixfARB",
+        "glMultTransposeMatrixdARB"}},
+      {"GL_ARB_vertex_buffer_object",
+       {"glBindBufferARB", "glDeleteBuffersARB", "glGenBuffersARB", "glIsBufferARB", "glBufferDataARB",
+        "glBufferSubDataARB", "glGetBufferSubDataARB", "glMapBufferARB", "glUnmapBufferARB",
+        "glGetBufferParameterivARB", "glGetBufferPointervARB"}},
+      {"GL_EXT_draw_range_elements", {"glDrawRangeElementsEXT"}},
+      {"GL_EXT_multi_draw_arrays", {"glMultiDrawArraysEXT", "glMultiDrawElementsEXT"}},
+      {"GL_EXT_rescale_normal", {}},
+      {"GL_EXT_separate_specular_color", {}},
+  };
+  const char* extensions = reinterpret_cast<const char*>(glGetString(GL_EXTENSIONS));
+  ASSERT_NE(extensions, nullptr);
+  std::istringstream words(extensions);
+  std::string name;
+  int known = 0;
+  while (words >> name) {
+    auto it = commands.find(name);
+    if (it == commands.end()) {
+      if (!kTestingAgainstMesa) ADD_FAILURE() << name << " is advertised but not checked here";
+      continue;
+    }
+    ++known;
+    for (const char* command : it->second)
+      EXPECT_NE(reinterpret_cast<void*>(OSMesaGetProcAddress(command)), nullptr) << name << ": " << command;
+  }
+  EXPECT_GT(known, 0);
+  if (kTestingAgainstMesa) return;
+  for (const char* glsl : {"glCreateShader", "glShaderSource", "glUseProgram", "glUniform1f"})
+    EXPECT_EQ(reinterpret_cast<void*>(OSMesaGetProcAddress(glsl)), nullptr) << glsl;
+  EXPECT_EQ(glGetString(GL_SHADING_LANGUAGE_VERSION), nullptr);
+  EXPECT_GL_ERROR(GL_INVALID_ENUM);
 }
 
 TEST_F(StateQueryTest, GetStringOfABadNameIsNullAndInvalidEnum) {

@@ -25,7 +25,7 @@
 #                     after frame 100
 #   valgrind PROGRAM  GLFX_VALGRIND_FRAMES (default 3) frames of PROGRAM under
 #                     valgrind's memcheck: an error or a definitely lost block
-#                     fails
+#                     fails (valgrind.supp: a false positive inside ld.so)
 #   --on-mesa         run the libglfixed side on Mesa instead, expecting
 #                     Mesa's names (checks the harness before GLX/EGL land)
 # environment:
@@ -461,7 +461,8 @@ test_valgrind() {
         fi
         # shellcheck disable=SC2206
         local vg=(valgrind -q --error-exitcode=99 --leak-check=full --errors-for-leak-kinds=definite
-                  --show-leak-kinds=definite --log-file="$work/$variant.valgrind" ${GLFX_VALGRIND_OPTS:-})
+                  --show-leak-kinds=definite --suppressions="$here/valgrind.supp"
+                  --log-file="$work/$variant.valgrind" ${GLFX_VALGRIND_OPTS:-})
         run_env=("${v_env[@]}")
         run_timeout=$((timeout_s * 3))
         run_side "$side2" "$v_nodisplay" "$work/$variant.log" "${vg[@]}" "$exe" "$work/$variant" "$frames" "${v_args[@]}"

@@ -16,6 +16,9 @@
 #   glxgears          glxgears -info for GLFX_GEARS_SECONDS (default 12): it
 #                     names libglfixed as GL_RENDERER, is still running at the
 #                     end and printed "N frames in 5.0 seconds" lines, N > 0
+#   symbols           every gl/glX/egl name the programs, libglut and the
+#                     mesa-utils tools import is defined in the drop-in (all
+#                     missing names at once; libglut is linked BIND_NOW)
 #   glxinfo           exits 0, "OpenGL renderer string" names libglfixed
 #   eglinfo           an "EGL vendor string" names libglfixed (with DISPLAY);
 #                     it does not crash, with DISPLAY and without one
@@ -482,8 +485,45 @@ test_valgrind() {
     finish
 }
 
+# Every gl*/glX*/egl* name the programs, Debian's libglut and the mesa-utils
+# tools import must exist in the drop-in library (libglut is linked BIND_NOW:
+# one missing name and the program does not start). Lists all missing names.
+test_symbols() {
+    local lib exe dep missing names
+    make_out symbols
+    lib="$dropin/libGL.so.1"
+    [ "$side2" = glfixed ] || lib="$(ldconfig -p | awk '$1 == "libGL.so.1" { print $NF; exit }')"
+    if [ ! -e "$lib" ]; then fail symbols "no libGL.so.1 in $dropin"; finish; fi
+    nm -D --defined-only "$lib" | awk '{ print $NF }' | sed 's/@.*//' | sort -u >"$work/defined"
+    if [ "$side2" = glfixed ] && [ -e "$dropin/libEGL.so.1" ]; then
+        nm -D --defined-only "$dropin/libEGL.so.1" | awk '{ print $NF }' | sed 's/@.*//' >>"$work/defined"
+        sort -u -o "$work/defined" "$work/defined"
+    elif [ "$side2" != glfixed ]; then
+        nm -D --defined-only "$(ldconfig -p | awk '$1 == "libEGL.so.1" { print $NF; exit }')" |
+            awk '{ print $NF }' | sed 's/@.*//' >>"$work/defined"
+        sort -u -o "$work/defined" "$work/defined"
+    fi
+    for exe in "$bin"/glut_lit_scene "$bin"/egl_window_scene "$bin"/egl_pbuffer_scene \
+               "$(command -v glxgears)" "$(command -v glxinfo)" "$(command -v eglinfo)"; do
+        [ -x "$exe" ] || continue
+        names="$(nm -D --undefined-only "$exe" | awk '{ print $NF }')"
+        for dep in $(ldd "$exe" 2>/dev/null | awk '$1 ~ /^libglut|^libGLU/ { print $3 }'); do
+            names="$names $(nm -D --undefined-only "$dep" | awk '{ print $NF }')"
+        done
+        missing="$(printf '%s\n' $names | sed 's/@.*//' | grep -E '^(gl|glX|egl)[A-Z]' | sort -u |
+                   comm -23 - "$work/defined" | tr '\n' ' ')"
+        if [ -n "$missing" ]; then
+            fail "symbols/$(basename "$exe")" "$(wc -w <<<"$missing") missing: $missing"
+        else
+            pass "symbols/$(basename "$exe")" "every imported gl/glX/egl name is defined in $(basename "$lib")"
+        fi
+    done
+    finish
+}
+
 mkdir -p "$out_root"
 case "$test_name" in
+    symbols) test_symbols ;;
     compare) [ -n "$program" ] || exit 2; test_compare "$program" ;;
     mesa) test_mesa ;;
     glxgears) test_glxgears ;;

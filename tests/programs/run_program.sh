@@ -49,6 +49,7 @@ dropin="${GLFX_DROPIN_DIR:-$here/@GLFX_PROG_REL_DROPIN@}"
 out_root="${GLFX_OUT_DIR:-$here/out}"
 timeout_s="${GLFX_TIMEOUT:-60}"
 SKIP=77
+unset DISPLAY   # only the Xvfb started here is used
 [ -d "$dropin" ] && dropin="$(cd "$dropin" && pwd)"
 
 on_mesa=0
@@ -97,14 +98,14 @@ trap 'stop_xvfb; exit 1' INT TERM
 # DISPLAY; -displayfd tells when the server accepts connections.
 start_xvfb() {
     command -v Xvfb >/dev/null 2>&1 || return 1
-    local n ready_file="$work/xvfb.displayfd" i
+    local n ready_file="$work/xvfb.displayfd" _
     for n in ${GLFX_XVFB_DISPLAYS:-$(seq 100 199)}; do
         [ -e "/tmp/.X$n-lock" ] || [ -e "/tmp/.X11-unix/X$n" ] && continue
         : >"$ready_file"
         Xvfb ":$n" -screen 0 1024x768x24 -nolisten tcp -noreset -displayfd 3 \
             3>"$ready_file" >"$work/xvfb.log" 2>&1 &
         xvfb_pid=$!
-        for i in $(seq 1 100); do
+        for _ in $(seq 1 100); do
             [ -s "$ready_file" ] && break
             kill -0 "$xvfb_pid" 2>/dev/null || break
             sleep 0.1
@@ -287,7 +288,7 @@ test_compare() {
 
 # Mesa only: each program draws, its variants agree, another frame differs.
 test_mesa() {
-    local prog variant dir first m c n total
+    local prog variant dir first m n total
     make_out mesa
     start_xvfb || echo "# no Xvfb: the variants that need an X server are skipped"
     echo "# Mesa only, display ${DISPLAY:-none}"
@@ -428,8 +429,8 @@ test_soak() {
     m="$(run_variant "$side2" "$prog" "$variant" "$work/soak" "$frames" --rss)"
     run_timeout=$timeout_s
     [ -n "$m" ] && { fail "$prog/soak" "$m"; finish; }
-    m="$(soak_verdict "$work/soak.log" "$frames" "$slack")"
-    if [ $? -eq 0 ]; then pass "$prog/soak" "$m"; else fail "$prog/soak" "$m"; fi
+    if m="$(soak_verdict "$work/soak.log" "$frames" "$slack")"; then pass "$prog/soak" "$m"
+    else fail "$prog/soak" "$m"; fi
     finish
 }
 
@@ -510,6 +511,7 @@ test_symbols() {
         for dep in $(ldd "$exe" 2>/dev/null | awk '$1 ~ /^libglut|^libGLU/ { print $3 }'); do
             names="$names $(nm -D --undefined-only "$dep" | awk '{ print $NF }')"
         done
+        # shellcheck disable=SC2086  # one name a word
         missing="$(printf '%s\n' $names | sed 's/@.*//' | grep -E '^(gl|glX|egl)[A-Z]' | sort -u |
                    comm -23 - "$work/defined" | tr '\n' ' ')"
         if [ -n "$missing" ]; then

@@ -11,6 +11,9 @@
  *                       eglGetPlatformDisplay(EGL_PLATFORM_X11_KHR, ...)
  *   --window-surface    eglCreateWindowSurface instead of
  *                       eglCreatePlatformWindowSurface
+ *   --resize            after half the frames, XResizeWindow to 256x200 and
+ *                       wait for its ConfigureNotify; the later frames draw at
+ *                       that size and the surface must follow its window
  *   --rss               print the memory use every 100 frames and at the end
  * writes OUT_PREFIX.glfx (the dump format of reference/scenes/scene.h).
  * Exit status: 0 drawn and written, 1 usage, 2 failure (message on stderr).
@@ -28,7 +31,7 @@
 #include "program_common.h"
 #include "program_x11.h"
 
-enum { WIDTH = 320, HEIGHT = 240 };
+enum { WIDTH = 320, HEIGHT = 240, RESIZED_WIDTH = 256, RESIZED_HEIGHT = 200 };
 static const char *const kProgram = "egl_window_scene";
 
 static Display *g_x11;  /* for visual_ok, which eglChooseConfig's filter calls */
@@ -46,6 +49,30 @@ static int visual_ok(EGLDisplay dpy, EGLConfig config)
     const int ok = vi && n > 0 && (vi->depth == 24 || vi->depth == 32) && vi->class == TrueColor;
     if (vi) XFree(vi);
     return ok;
+}
+
+/* Resizes the window and waits until the server has done it. */
+static void resize_window(Display *x11, Window window, int width, int height)
+{
+    XResizeWindow(x11, window, (unsigned)width, (unsigned)height);
+    XEvent event;
+    do XWindowEvent(x11, window, StructureNotifyMask, &event);
+    while (event.type != ConfigureNotify || event.xconfigure.width != width ||
+           event.xconfigure.height != height);
+}
+
+/* EGL_WIDTH and EGL_HEIGHT of the surface must be width x height. */
+static int check_surface_size(EGLDisplay dpy, EGLSurface surface, int width, int height)
+{
+    EGLint w = 0, h = 0;
+    if (egl_check(kProgram, "eglQuerySurface(EGL_WIDTH)", eglQuerySurface(dpy, surface, EGL_WIDTH, &w)) ||
+        egl_check(kProgram, "eglQuerySurface(EGL_HEIGHT)", eglQuerySurface(dpy, surface, EGL_HEIGHT, &h)))
+        return -1;
+    if (w != width || h != height) {
+        fprintf(stderr, "%s: the surface is %dx%d, not %dx%d\n", kProgram, w, h, width, height);
+        return -1;
+    }
+    return 0;
 }
 
 static Window create_window(Display *x11, EGLDisplay dpy, EGLConfig config)
@@ -84,9 +111,10 @@ static Window create_window(Display *x11, EGLDisplay dpy, EGLConfig config)
 int main(int argc, char **argv)
 {
     const char *prefix = NULL;
-    int frames = 10, positional = 0, get_display = 0, window_surface = 0, rss = 0;
+    int frames = 10, positional = 0, get_display = 0, window_surface = 0, rss = 0, resize = 0;
     for (int i = 1; i < argc; i++) {
         if (strcmp(argv[i], "--get-display") == 0) get_display = 1;
+        else if (strcmp(argv[i], "--resize") == 0) resize = 1;
         else if (strcmp(argv[i], "--window-surface") == 0) window_surface = 1;
         else if (strcmp(argv[i], "--rss") == 0) rss = 1;
         else if (argv[i][0] != '-' && positional == 0) prefix = argv[i], positional++;
@@ -95,7 +123,8 @@ int main(int argc, char **argv)
         else { positional = -1; break; }
     }
     if (positional < 1) {
-        fprintf(stderr, "usage: %s OUT_PREFIX [FRAMES] [--get-display] [--window-surface] [--rss]\n",
+        fprintf(stderr,
+                "usage: %s OUT_PREFIX [FRAMES] [--get-display] [--window-surface] [--resize] [--rss]\n",
                 kProgram);
         return 1;
     }
@@ -137,14 +166,7 @@ int main(int argc, char **argv)
     }
     if (egl_check(kProgram, "eglMakeCurrent", eglMakeCurrent(dpy, surface, surface, context))) return 2;
     if (egl_check(kProgram, "eglSwapInterval(0)", eglSwapInterval(dpy, 0))) return 2;
-    EGLint sw = 0, sh = 0;
-    if (egl_check(kProgram, "eglQuerySurface(EGL_WIDTH)", eglQuerySurface(dpy, surface, EGL_WIDTH, &sw)) ||
-        egl_check(kProgram, "eglQuerySurface(EGL_HEIGHT)", eglQuerySurface(dpy, surface, EGL_HEIGHT, &sh)))
-        return 2;
-    if (sw != WIDTH || sh != HEIGHT) {
-        fprintf(stderr, "%s: the surface is %dx%d, not %dx%d\n", kProgram, sw, sh, WIDTH, HEIGHT);
-        return 2;
-    }
+    if (check_surface_size(dpy, surface, WIDTH, HEIGHT)) return 2;
     if (eglGetCurrentContext() != context || eglGetCurrentSurface(EGL_DRAW) != surface ||
         eglGetCurrentDisplay() != dpy) {
         fprintf(stderr, "%s: eglGetCurrent* do not name what eglMakeCurrent made current\n", kProgram);
@@ -153,20 +175,27 @@ int main(int argc, char **argv)
     if (program_print_renderer() != 0) return 2;
 
     program_lights_setup();
+    int width = WIDTH, height = HEIGHT;
     for (int frame = 0; frame < frames; frame++) {
-        program_draw_egl_scene(WIDTH, HEIGHT, frame);
+        if (resize && frame == frames / 2) {
+            resize_window(x11, window, RESIZED_WIDTH, RESIZED_HEIGHT);
+            width = RESIZED_WIDTH;
+            height = RESIZED_HEIGHT;
+        }
+        program_draw_egl_scene(width, height, frame);
         if (egl_check(kProgram, "eglSwapBuffers", eglSwapBuffers(dpy, surface))) return 2;
         if (rss && ((frame + 1) % 100 == 0 || frame + 1 == frames)) program_report_rss(frame + 1);
     }
     glFinish();
+    if (check_surface_size(dpy, surface, width, height)) return 2;
 
     int status = 0;
-    unsigned char *rgba = malloc((size_t)WIDTH * HEIGHT * 4);
-    if (!rgba || program_read_window(x11, window, WIDTH, HEIGHT, rgba) != 0 ||
-        program_write_dump(prefix, WIDTH, HEIGHT, rgba, 3, frames) != 0)
+    unsigned char *rgba = malloc((size_t)width * height * 4);
+    if (!rgba || program_read_window(x11, window, width, height, rgba) != 0 ||
+        program_write_dump(prefix, width, height, rgba, 3, frames) != 0)
         status = 2;
     else
-        printf("covered pixels: %ld of %d\n", program_covered_pixels(WIDTH, HEIGHT, rgba), WIDTH * HEIGHT);
+        printf("covered pixels: %ld of %d\n", program_covered_pixels(width, height, rgba), width * height);
     free(rgba);
 
     if (egl_check(kProgram, "eglMakeCurrent(none)",

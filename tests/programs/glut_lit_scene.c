@@ -6,8 +6,11 @@
  * each frame (by frame number, never by the clock), and after the last swap
  * reads the window back from the X server with XGetImage and writes it.
  *
- * usage: glut_lit_scene OUT_PREFIX [FRAMES] [--rss]
+ * usage: glut_lit_scene OUT_PREFIX [FRAMES] [--resize] [--rss]
  *   writes OUT_PREFIX.glfx (the dump format of reference/scenes/scene.h);
+ *   --resize: after half the frames, glutReshapeWindow(256, 200); the frames
+ *   after it are counted once the reshape callback has the new size, and the
+ *   picture is read at that size (the surface must follow its window);
  *   --rss prints the memory use every 100 frames and at the end.
  * Exit status: 0 drawn and written, 1 usage, 2 failure (message on stderr).
  */
@@ -20,20 +23,26 @@
 #include "program_common.h"
 #include "program_x11.h"
 
-enum { WIDTH = 320, HEIGHT = 240 };
+enum { WIDTH = 320, HEIGHT = 240, RESIZED_WIDTH = 256, RESIZED_HEIGHT = 200 };
 
 static struct {
     const char *prefix;
     int frames, frame, rss;
-    int width, height;
+    int resize;        /* --resize: 1 asked, 2 asked of the window */
+    int width, height; /* from the reshape callback */
     int status;
-} P = {NULL, 10, 0, 0, WIDTH, HEIGHT, 2};
+} P = {NULL, 10, 0, 0, 0, WIDTH, HEIGHT, 2};
 
 static void reshape(int width, int height)
 {
     P.width = width;
     P.height = height;
+    glutPostRedisplay();
 }
+
+/* The size the window has at the last frame. */
+static int final_width(void) { return P.resize ? RESIZED_WIDTH : WIDTH; }
+static int final_height(void) { return P.resize ? RESIZED_HEIGHT : HEIGHT; }
 
 /* Reads the window back (after the last swap) and writes the picture. */
 static int finish(void)
@@ -46,23 +55,31 @@ static int finish(void)
                 (void *)dpy, (unsigned long)drawable);
         return -1;
     }
+    const int width = final_width(), height = final_height();
     int w = 0, h = 0;
-    if (program_window_size(dpy, drawable, &w, &h) != 0 || w != WIDTH || h != HEIGHT) {
-        fprintf(stderr, "glut_lit_scene: the window is %dx%d, not %dx%d\n", w, h, WIDTH, HEIGHT);
+    if (program_window_size(dpy, drawable, &w, &h) != 0 || w != width || h != height) {
+        fprintf(stderr, "glut_lit_scene: the window is %dx%d, not %dx%d\n", w, h, width, height);
         return -1;
     }
-    unsigned char *rgba = malloc((size_t)WIDTH * HEIGHT * 4);
+    unsigned char *rgba = malloc((size_t)width * height * 4);
     if (!rgba) return -1;
-    int rc = program_read_window(dpy, drawable, WIDTH, HEIGHT, rgba);
-    if (rc == 0) rc = program_write_dump(P.prefix, WIDTH, HEIGHT, rgba, 3, P.frames);
-    if (rc == 0) printf("covered pixels: %ld of %d\n", program_covered_pixels(WIDTH, HEIGHT, rgba),
-                        WIDTH * HEIGHT);
+    int rc = program_read_window(dpy, drawable, width, height, rgba);
+    if (rc == 0) rc = program_write_dump(P.prefix, width, height, rgba, 3, P.frames);
+    if (rc == 0) printf("covered pixels: %ld of %d\n", program_covered_pixels(width, height, rgba),
+                        width * height);
     free(rgba);
     return rc;
 }
 
 static void display(void)
 {
+    /* --resize: ask at half the frames, then draw only once the reshape
+     * callback has the new size, so the frame count stays deterministic. */
+    if (P.resize == 1 && P.frame == P.frames / 2) {
+        glutReshapeWindow(RESIZED_WIDTH, RESIZED_HEIGHT);
+        P.resize = 2;
+    }
+    if (P.resize == 2 && (P.width != RESIZED_WIDTH || P.height != RESIZED_HEIGHT)) return;
     const float a = program_angle(P.frame, 3.0f);
     program_clear();
     program_view(P.width, P.height, P.frame);
@@ -107,6 +124,8 @@ int main(int argc, char **argv)
     for (int i = 1; i < argc; i++) {
         if (strcmp(argv[i], "--rss") == 0) {
             P.rss = 1;
+        } else if (strcmp(argv[i], "--resize") == 0) {
+            P.resize = 1;
         } else if (positional == 0) {
             P.prefix = argv[i];
             positional++;
@@ -118,7 +137,7 @@ int main(int argc, char **argv)
         }
     }
     if (positional < 1) {
-        fprintf(stderr, "usage: glut_lit_scene OUT_PREFIX [FRAMES] [--rss]\n");
+        fprintf(stderr, "usage: glut_lit_scene OUT_PREFIX [FRAMES] [--resize] [--rss]\n");
         return 1;
     }
     glutInitDisplayMode(GLUT_DOUBLE | GLUT_RGB | GLUT_DEPTH);

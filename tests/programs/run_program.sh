@@ -177,21 +177,24 @@ covered_of() { sed -n 's/^covered pixels: \([0-9]*\) of \([0-9]*\)$/\1 \2/p' "$1
 # ---- the programs and their variants ----------------------------------------------
 # variants PROGRAM: the names; set_variant PROGRAM VARIANT sets v_args
 # (arguments after the frame count), v_env (VAR=value), v_nodisplay (run with
-# DISPLAY unset) and v_picture (0: writes no picture, checks only).
+# DISPLAY unset), v_picture (0: writes no picture, checks only) and v_own (1:
+# a picture of its own, not the one the program's other variants draw).
 variants() {
     case "$1" in
-        glut_lit_scene) echo window ;;
-        egl_window_scene) echo "platform get_display" ;;
+        glut_lit_scene) echo "window resized" ;;
+        egl_window_scene) echo "platform get_display resized" ;;
         egl_pbuffer_scene) echo "surfaceless default_display default_display_x11 no_surface" ;;
         *) return 1 ;;
     esac
 }
 set_variant() {
-    v_args=(); v_env=(); v_nodisplay=0; v_picture=1
+    v_args=(); v_env=(); v_nodisplay=0; v_picture=1; v_own=0
     case "$1/$2" in
         glut_lit_scene/window) ;;
+        glut_lit_scene/resized) v_args=(--resize); v_own=1 ;;   # 320x240, then 256x200 at half the frames
         egl_window_scene/platform) ;;   # eglGetPlatformDisplay + eglCreatePlatformWindowSurface
         egl_window_scene/get_display) v_args=(--get-display --window-surface) ;;
+        egl_window_scene/resized) v_args=(--resize); v_own=1 ;;   # XResizeWindow to 256x200 at half the frames
         egl_pbuffer_scene/surfaceless) v_nodisplay=1 ;;
         # Mesa's eglGetDisplay(EGL_DEFAULT_DISPLAY) is its X11 platform, which
         # fails with no DISPLAY unless EGL_PLATFORM names another one.
@@ -310,8 +313,8 @@ test_mesa() {
                 fail "$prog/$variant" "covered ${n:-?} of ${total:-?} pixels: drew nothing, or everything"
                 continue
             fi
-            if [ -z "$first" ]; then
-                first="$dir"
+            if [ -z "$first" ] || [ "$v_own" -eq 1 ]; then
+                [ "$v_own" -eq 1 ] || first="$dir"
                 # The picture one frame later must fail the comparison.
                 m="$(run_variant mesa "$prog" "$variant" "$dir/later" 11)"
                 if [ -n "$m" ]; then fail "$prog/$variant" "frame 11: $m"; continue; fi

@@ -8,6 +8,9 @@ packages=(
   libx11-dev libxext-dev            # GLX and EGL windows: Xlib and MIT-SHM
   libosmesa6-dev libglu1-mesa-dev libgl-dev  # Mesa's OSMesa and GL headers: the reference
   khronos-api                       # gl.xml, for tools/gen_gl_header.py
+  # Real programs (tests/programs): an X server for ctest, Debian's glxgears,
+  # glxinfo and eglinfo, freeglut, X11 and EGL headers, valgrind for the soaks.
+  xvfb xauth mesa-utils freeglut3-dev libx11-dev libxext-dev libegl-dev valgrind
 )
 sudo=""
 [ "$(id -u)" -eq 0 ] || sudo="sudo"

@@ -10,7 +10,7 @@ packages=(
   khronos-api                       # gl.xml, for tools/gen_gl_header.py
   # Real programs (tests/programs): an X server for ctest, Debian's glxgears,
   # glxinfo and eglinfo, freeglut, X11 and EGL headers, valgrind for the soaks.
-  xvfb xauth mesa-utils freeglut3-dev libx11-dev libxext-dev libegl-dev valgrind
+  xvfb xauth mesa-utils freeglut3-dev libegl-dev valgrind
 )
 sudo=""
 [ "$(id -u)" -eq 0 ] || sudo="sudo"

@@ -7,6 +7,9 @@ packages=(
   libglm-dev libgtest-dev libpng-dev
   libosmesa6-dev libglu1-mesa-dev libgl-dev  # Mesa's OSMesa and GL headers: the reference
   khronos-api                       # gl.xml, for tools/gen_gl_header.py
+  # piglit (issue 13): piglit's test programs, run under a private X server by
+  # tests/piglit/run_piglit.sh; xauth is for xvfb-run.
+  piglit xvfb xauth
 )
 sudo=""
 [ "$(id -u)" -eq 0 ] || sudo="sudo"

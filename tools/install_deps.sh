@@ -11,6 +11,9 @@ packages=(
   # Real programs (tests/programs): an X server for ctest, Debian's glxgears,
   # glxinfo and eglinfo, freeglut, X11 and EGL headers, valgrind for the soaks.
   xvfb xauth mesa-utils freeglut3-dev libegl-dev valgrind
+  # piglit (issue 13): piglit's test programs, run under a private X server by
+  # tests/piglit/run_piglit.sh; xauth is for xvfb-run.
+  piglit
 )
 sudo=""
 [ "$(id -u)" -eq 0 ] || sudo="sudo"

@@ -1,7 +1,7 @@
 // The ARB and EXT names legacy programs call for the vertex array and buffer
 // object commands (ARB_vertex_buffer_object, EXT_draw_range_elements,
 // EXT_multi_draw_arrays, ARB_multitexture's glClientActiveTextureARB,
-// ARB/EXT_point_parameters, ARB_transpose_matrix): the
+// ARB/EXT_point_parameters, ARB_transpose_matrix, EXT_vertex_array): the
 // same functions under their extension names, exported and known to
 // OSMesaGetProcAddress. Mesa's gl.h/glext.h declare them; ours does not.
 #include <GL/gl.h>
@@ -53,6 +53,30 @@ GLAPI void APIENTRY glPointParameterfvARB(GLenum pname, const GLfloat* params) {
 GLAPI void APIENTRY glPointParameterfEXT(GLenum pname, GLfloat param) { glPointParameterf(pname, param); }
 GLAPI void APIENTRY glPointParameterfvEXT(GLenum pname, const GLfloat* params) { glPointParameterfv(pname, params); }
 
+// EXT_vertex_array: the GL 1.1 arrays with an element count, which GL 1.1
+// ignores too (the arrays are read where the draw says).
+GLAPI void APIENTRY glArrayElementEXT(GLint i) { glArrayElement(i); }
+GLAPI void APIENTRY glDrawArraysEXT(GLenum mode, GLint first, GLsizei count) { glDrawArrays(mode, first, count); }
+GLAPI void APIENTRY glGetPointervEXT(GLenum pname, void** params) { glGetPointerv(pname, params); }
+GLAPI void APIENTRY glVertexPointerEXT(GLint size, GLenum type, GLsizei stride, GLsizei, const void* pointer) {
+  glVertexPointer(size, type, stride, pointer);
+}
+GLAPI void APIENTRY glNormalPointerEXT(GLenum type, GLsizei stride, GLsizei, const void* pointer) {
+  glNormalPointer(type, stride, pointer);
+}
+GLAPI void APIENTRY glColorPointerEXT(GLint size, GLenum type, GLsizei stride, GLsizei, const void* pointer) {
+  glColorPointer(size, type, stride, pointer);
+}
+GLAPI void APIENTRY glIndexPointerEXT(GLenum type, GLsizei stride, GLsizei, const void* pointer) {
+  glIndexPointer(type, stride, pointer);
+}
+GLAPI void APIENTRY glTexCoordPointerEXT(GLint size, GLenum type, GLsizei stride, GLsizei, const void* pointer) {
+  glTexCoordPointer(size, type, stride, pointer);
+}
+GLAPI void APIENTRY glEdgeFlagPointerEXT(GLsizei stride, GLsizei, const GLboolean* pointer) {
+  glEdgeFlagPointer(stride, pointer);
+}
+
 // ARB_transpose_matrix.
 GLAPI void APIENTRY glLoadTransposeMatrixfARB(const GLfloat* m) { glLoadTransposeMatrixf(m); }
 GLAPI void APIENTRY glLoadTransposeMatrixdARB(const GLdouble* m) { glLoadTransposeMatrixd(m); }
@@ -84,6 +108,11 @@ const Alias kAliases[] = {
     GLFX_ALIAS(glPointParameterfEXT),     GLFX_ALIAS(glPointParameterfvEXT),
     GLFX_ALIAS(glLoadTransposeMatrixfARB), GLFX_ALIAS(glLoadTransposeMatrixdARB),
     GLFX_ALIAS(glMultTransposeMatrixfARB), GLFX_ALIAS(glMultTransposeMatrixdARB),
+    GLFX_ALIAS(glArrayElementEXT),        GLFX_ALIAS(glDrawArraysEXT),
+    GLFX_ALIAS(glGetPointervEXT),         GLFX_ALIAS(glVertexPointerEXT),
+    GLFX_ALIAS(glNormalPointerEXT),       GLFX_ALIAS(glColorPointerEXT),
+    GLFX_ALIAS(glIndexPointerEXT),        GLFX_ALIAS(glTexCoordPointerEXT),
+    GLFX_ALIAS(glEdgeFlagPointerEXT),
 };
 #undef GLFX_ALIAS
 }  // namespace

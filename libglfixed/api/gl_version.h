@@ -19,6 +19,6 @@ constexpr const char* kGLRendererString = "libglfixed fixed-function software re
 constexpr const char* kGLExtensionsString =
     "GL_ARB_point_parameters GL_ARB_provoking_vertex GL_ARB_transpose_matrix GL_ARB_vertex_buffer_object "
     "GL_EXT_draw_range_elements GL_EXT_multi_draw_arrays GL_EXT_point_parameters GL_EXT_provoking_vertex "
-    "GL_EXT_rescale_normal GL_EXT_separate_specular_color";
+    "GL_EXT_rescale_normal GL_EXT_separate_specular_color GL_EXT_vertex_array";
 
 }  // namespace glfixed

@@ -488,6 +488,9 @@ TEST_F(StateQueryTest, AdvertisedExtensionsHaveTheirCommands) {
       {"GL_EXT_multi_draw_arrays", {"glMultiDrawArraysEXT", "glMultiDrawElementsEXT"}},
       {"GL_EXT_rescale_normal", {}},
       {"GL_EXT_separate_specular_color", {}},
+      {"GL_EXT_vertex_array",
+       {"glArrayElementEXT", "glDrawArraysEXT", "glGetPointervEXT", "glVertexPointerEXT", "glNormalPointerEXT",
+        "glColorPointerEXT", "glIndexPointerEXT", "glTexCoordPointerEXT", "glEdgeFlagPointerEXT"}},
   };
   const char* extensions = reinterpret_cast<const char*>(glGetString(GL_EXTENSIONS));
   ASSERT_NE(extensions, nullptr);

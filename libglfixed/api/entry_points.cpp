@@ -4,7 +4,6 @@
 #include <GL/osmesa.h>
 
 #include <cstdio>
-#include <cstdlib>
 #include <cstring>
 #include <mutex>
 #include <set>
@@ -20,7 +19,7 @@ namespace {
 // GLFIXED_DEBUG is set), record GL_INVALID_OPERATION, return a harmless value.
 template <typename T>
 T unimplemented(const char* name) {
-  if (std::getenv("GLFIXED_DEBUG")) {
+  if (debugOutputEnabled()) {
     static std::mutex m;
     static std::set<std::string> said;
     std::lock_guard<std::mutex> lock(m);

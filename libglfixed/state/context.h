@@ -15,6 +15,7 @@
 #include "state/attrib_stack.h"
 #include "state/attribs.h"
 #include "state/buffer_objects.h"
+#include "state/diagnostics.h"
 #include "state/dirty.h"
 #include "state/eval_attrib.h"
 #include "state/lighting_attrib.h"
@@ -127,8 +128,10 @@ class Context {
   pipeline::DisplayLists displayLists;
 
   // Errors (GL 2.1 §2.5): the first error is kept until glGetError reads it.
+  // With GLFIXED_DEBUG set, every error is also printed (state/diagnostics.h).
   void recordError(GLenum error) {
     if (error_ == GL_NO_ERROR) error_ = error;
+    if (reportErrors_) reportError(error);
   }
   GLenum takeError() {
     GLenum e = error_;
@@ -152,6 +155,7 @@ class Context {
 
  private:
   GLenum error_ = GL_NO_ERROR;
+  const bool reportErrors_ = debugOutputEnabled();
   uint32_t dirty_ = kDirtyAll;
   vertex::VertexState vertexState_;
   vertex::LightingConstants lightingConstants_;

@@ -5,6 +5,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "api/api.h"
+#include "api/gl_version.h"
 #include "state/vertex_array_queries.h"
 #include "state/capabilities.h"
 #include "api/eval_commands.h"
@@ -380,7 +381,7 @@ GLAPI const GLubyte* APIENTRY glGetString(GLenum name) {
   switch (name) {
     case GL_VENDOR: s = "libglfixed"; break;
     case GL_RENDERER: s = "libglfixed fixed-function software renderer"; break;
-    case GL_VERSION: s = "2.1 libglfixed 0.1"; break;
+    case GL_VERSION: s = api::kGlVersionString; break;
     case GL_EXTENSIONS: s = "GL_ARB_provoking_vertex GL_EXT_provoking_vertex"; break;
     case GL_SHADING_LANGUAGE_VERSION: s = nullptr; break;  // no GLSL: GL 2.1 without shaders yet
     default: break;

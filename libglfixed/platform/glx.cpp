@@ -66,6 +66,18 @@ DisplayState* displayState(Display* display) {
   return r.emplace(display, std::move(ds)).first->second.get();
 }
 
+// Xlib's XAllocID hands out one id and has the next made only when a
+// request goes through its sync handler: two calls in a row (ours, then
+// Xlib's own inside XCreatePixmap) would find none ready. _XAllocIDs asks
+// xcb for ids directly, under the display lock as Xlib's own callers do.
+XID newDrawableId(Display* display) {
+  XID id = 0;
+  LockDisplay(display);
+  _XAllocIDs(display, &id, 1);
+  UnlockDisplay(display);
+  return id;
+}
+
 __GLXcontextRec* currentGlxContext() {
   return tCurrent && currentContext() == &tCurrent->context ? tCurrent : nullptr;
 }

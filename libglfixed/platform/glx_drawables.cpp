@@ -53,7 +53,7 @@ GLXPixmap createPixmap(Display* dpy, const FBConfig* config, Pixmap pixmap) {
   if (!surface) return None;  // not a pixmap of the configuration's depth
   auto d = std::make_shared<GlxDrawable>();
   d->kind = GlxDrawable::Kind::kGlxPixmap;
-  d->id = XAllocID(dpy);
+  d->id = newDrawableId(dpy);
   d->x11 = pixmap;
   d->config = config;
   d->surface = std::move(surface);
@@ -186,7 +186,7 @@ GLAPI GLXPbuffer APIENTRY glXCreatePbuffer(Display* dpy, GLXFBConfig config, con
     d->height = std::min(d->height, max);
   }
   d->kind = GlxDrawable::Kind::kPbuffer;
-  d->id = XAllocID(dpy);
+  d->id = newDrawableId(dpy);
   d->config = config;
   // A 0x0 pbuffer (the defaults) is allowed; its surface holds one pixel.
   d->surface = std::make_shared<Surface>(std::max(d->width, 1), std::max(d->height, 1),

@@ -76,17 +76,14 @@ GLAPI void APIENTRY glXUseXFont(Font font, int first, int count, int listBase) {
   }
   if (!fs) return;  // BadFont
   const Window root = RootWindow(dpy, ctx->config->screen);
-  // The glyphs' bits as they are stored: tightly, most significant bit
-  // first (the program's unpack state is put back after).
-  GLint swap, lsb, rowLength, skipRows, skipPixels, alignment;
-  glGetIntegerv(GL_UNPACK_SWAP_BYTES, &swap);
-  glGetIntegerv(GL_UNPACK_LSB_FIRST, &lsb);
+  // The glyphs' bits as they are stored: tightly (the program's unpack
+  // state is put back after; byte swapping and LSB_FIRST are always off in
+  // this library).
+  GLint rowLength = 0, skipRows = 0, skipPixels = 0, alignment = 4;
   glGetIntegerv(GL_UNPACK_ROW_LENGTH, &rowLength);
   glGetIntegerv(GL_UNPACK_SKIP_ROWS, &skipRows);
   glGetIntegerv(GL_UNPACK_SKIP_PIXELS, &skipPixels);
   glGetIntegerv(GL_UNPACK_ALIGNMENT, &alignment);
-  glPixelStorei(GL_UNPACK_SWAP_BYTES, GL_FALSE);
-  glPixelStorei(GL_UNPACK_LSB_FIRST, GL_FALSE);
   glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
   glPixelStorei(GL_UNPACK_SKIP_ROWS, 0);
   glPixelStorei(GL_UNPACK_SKIP_PIXELS, 0);
@@ -110,8 +107,6 @@ GLAPI void APIENTRY glXUseXFont(Font font, int first, int count, int listBase) {
       glEndList();
     }
   }
-  glPixelStorei(GL_UNPACK_SWAP_BYTES, swap);
-  glPixelStorei(GL_UNPACK_LSB_FIRST, lsb);
   glPixelStorei(GL_UNPACK_ROW_LENGTH, rowLength);
   glPixelStorei(GL_UNPACK_SKIP_ROWS, skipRows);
   glPixelStorei(GL_UNPACK_SKIP_PIXELS, skipPixels);

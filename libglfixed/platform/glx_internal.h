@@ -67,6 +67,10 @@ std::recursive_mutex& glxMutex();
 // The Display's GLX state, made at first use; null for a null display.
 DisplayState* displayState(Display* display);
 
+// A fresh XID for a GLX drawable that is no X resource (a pbuffer, a GLX
+// pixmap), from the range Xlib allocates from.
+XID newDrawableId(Display* display);
+
 // glx_configs.cpp.
 // Fills ds.screens (at the Display's first use).
 void makeConfigs(DisplayState& ds);

@@ -107,6 +107,8 @@ const Entry kGlxEntries[] = {
     GLX_ENTRY(glXSelectEvent),           GLX_ENTRY(glXGetSelectedEvent),
     GLX_ENTRY(glXGetProcAddress),        GLX_ENTRY(glXGetProcAddressARB),
     GLX_ENTRY(glXCreateContextAttribsARB), GLX_ENTRY(glXQueryContextInfoEXT),
+    GLX_ENTRY(glXSwapIntervalEXT),       GLX_ENTRY(glXSwapIntervalMESA),
+    GLX_ENTRY(glXGetSwapIntervalMESA),   GLX_ENTRY(glXSwapIntervalSGI),
 };
 #undef GLX_ENTRY
 

@@ -27,7 +27,7 @@ namespace {
 // is offered).
 constexpr const char* kExtensions =
     "GLX_ARB_create_context GLX_ARB_create_context_profile GLX_ARB_get_proc_address "
-    "GLX_EXT_visual_info GLX_EXT_visual_rating";
+    "GLX_EXT_swap_control GLX_EXT_visual_info GLX_EXT_visual_rating GLX_MESA_swap_control GLX_SGI_swap_control";
 
 std::map<Display*, std::unique_ptr<DisplayState>>& registry() {
   static auto* r = new std::map<Display*, std::unique_ptr<DisplayState>>();

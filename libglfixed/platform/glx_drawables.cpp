@@ -3,6 +3,8 @@
 // buffers; glXSwapBuffers; glXQueryDrawable and the GLX events.
 #include <X11/Xutil.h>
 
+#include <thread>
+
 #include "pipeline/immediate_mode.h"
 #include "platform/glx_internal.h"
 #include "platform/x11_error_trap.h"
@@ -69,6 +71,33 @@ void destroy(Display* dpy, XID id, GlxDrawable::Kind kind) {
   if (it != ds->drawables.end() && it->second->kind == kind) ds->drawables.erase(it);
 }
 
+// GLX_EXT_swap_control and friends. There is no vertical retrace to wait for
+// on a surface the library draws itself; a swap interval N > 0 spaces swaps
+// N periods of a nominal 60 Hz display apart. The interval starts at 0, as
+// measured on Mesa's llvmpipe under Xvfb (glxgears reports no
+// synchronisation there and swaps as fast as it draws).
+constexpr int kMaxSwapInterval = 8;
+constexpr std::chrono::microseconds kRefreshPeriod(16667);
+
+void paceSwap(GlxDrawable& d) {
+  const auto now = std::chrono::steady_clock::now();
+  if (d.swapInterval > 0) {
+    const auto due = d.lastSwap + d.swapInterval * kRefreshPeriod;
+    if (due > now) {
+      std::this_thread::sleep_until(due);
+      d.lastSwap = due;
+      return;
+    }
+  }
+  d.lastSwap = now;
+}
+
+// The drawable the calling thread's GLX context draws into, or null.
+std::shared_ptr<GlxDrawable> currentDrawable() {
+  __GLXcontextRec* c = currentGlxContext();
+  return c ? c->draw : nullptr;
+}
+
 }  // namespace
 
 std::shared_ptr<GlxDrawable> drawableFor(DisplayState& ds, GLXDrawable id, const FBConfig* config) {
@@ -114,6 +143,7 @@ GLAPI void APIENTRY glXSwapBuffers(Display* dpy, GLXDrawable drawable) {
   // The current context's buffered vertices belong in the back buffer first
   // (GLX 1.4 §3.3.11: an implicit glFlush).
   if (current && current->draw == d) glfixed::pipeline::flushVertices(current->context);
+  paceSwap(*d);
   d->surface->swapBuffers();
 }
 
@@ -219,6 +249,8 @@ GLAPI void APIENTRY glXQueryDrawable(Display* dpy, GLXDrawable draw, int attribu
     case GLX_PRESERVED_CONTENTS: *value = d ? d->preserved : True; break;
     case GLX_LARGEST_PBUFFER: *value = d ? d->largest : False; break;
     case GLX_FBCONFIG_ID: *value = d && d->config ? d->config->config->id : 0; break;
+    case GLX_SWAP_INTERVAL_EXT: *value = d ? d->swapInterval : 0; break;
+    case GLX_MAX_SWAP_INTERVAL_EXT: *value = kMaxSwapInterval; break;
     default: break;  // BadValue: *value is left alone
   }
 }
@@ -241,6 +273,37 @@ GLAPI void APIENTRY glXGetSelectedEvent(Display* dpy, GLXDrawable draw, unsigned
   if (!ds) return;
   auto it = ds->drawables.find(draw);
   if (it != ds->drawables.end()) *eventMask = it->second->eventMask;
+}
+
+GLAPI void APIENTRY glXSwapIntervalEXT(Display* dpy, GLXDrawable drawable, int interval) {
+  std::lock_guard<std::recursive_mutex> lock(glxMutex());
+  DisplayState* ds = displayState(dpy);
+  if (!ds || interval < 0) return;  // BadValue
+  auto it = ds->drawables.find(drawable);
+  if (it != ds->drawables.end()) it->second->swapInterval = std::min(interval, kMaxSwapInterval);
+}
+
+GLAPI int APIENTRY glXSwapIntervalMESA(unsigned int interval) {
+  std::lock_guard<std::recursive_mutex> lock(glxMutex());
+  std::shared_ptr<GlxDrawable> d = currentDrawable();
+  if (!d) return GLX_BAD_CONTEXT;
+  d->swapInterval = static_cast<int>(std::min<unsigned>(interval, kMaxSwapInterval));
+  return 0;
+}
+
+GLAPI int APIENTRY glXGetSwapIntervalMESA(void) {
+  std::lock_guard<std::recursive_mutex> lock(glxMutex());
+  std::shared_ptr<GlxDrawable> d = currentDrawable();
+  return d ? d->swapInterval : 0;
+}
+
+GLAPI int APIENTRY glXSwapIntervalSGI(int interval) {
+  if (interval <= 0) return GLX_BAD_VALUE;
+  std::lock_guard<std::recursive_mutex> lock(glxMutex());
+  std::shared_ptr<GlxDrawable> d = currentDrawable();
+  if (!d) return GLX_BAD_CONTEXT;
+  d->swapInterval = std::min(interval, kMaxSwapInterval);
+  return 0;
 }
 
 }  // extern "C"

@@ -13,6 +13,7 @@
 #endif
 #include <GL/glx.h>
 
+#include <chrono>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -48,7 +49,10 @@ struct GlxDrawable {
   unsigned long eventMask = 0;  // glXSelectEvent
   int width = 0, height = 0;    // a pbuffer's, as asked
   bool preserved = true, largest = false;
-  int swapInterval = 0;         // GLX_EXT_swap_control (see glx_drawables.cpp)
+  // GLX_EXT_swap_control: swaps are paced to `swapInterval` periods of a
+  // nominal 60 Hz display (glx_drawables.cpp).
+  int swapInterval = 0;
+  std::chrono::steady_clock::time_point lastSwap{};
 };
 
 struct DisplayState {

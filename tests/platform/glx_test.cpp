@@ -16,6 +16,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <cstdlib>
 #include <cstring>
 #include <string>
@@ -484,6 +485,34 @@ TEST_F(GlxTest, UseXFontMakesListsThatAdvanceTheRasterPosition) {
   EXPECT_FLOAT_EQ(after[0] - before[0], 2.0f * advance(' '));
   EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
   XFreeFont(dpy_, font);
+  glXMakeCurrent(dpy_, None, nullptr);
+  glXDestroyContext(dpy_, ctx);
+}
+
+TEST_F(GlxTest, SwapIntervalSpacesSwaps) {
+  EXPECT_EQ(glXSwapIntervalMESA(1), GLX_BAD_CONTEXT);  // no current context
+  EXPECT_EQ(glXSwapIntervalSGI(1), GLX_BAD_CONTEXT);
+  XVisualInfo* vis = chooseVisual({GLX_RGBA, GLX_DOUBLEBUFFER});
+  ASSERT_NE(vis, nullptr);
+  const Window win = makeWindow(vis, 16, 16);
+  GLXContext ctx = glXCreateContext(dpy_, vis, nullptr, True);
+  XFree(vis);
+  ASSERT_TRUE(glXMakeCurrent(dpy_, win, ctx));
+  unsigned interval = 99;
+  glXQueryDrawable(dpy_, win, GLX_SWAP_INTERVAL_EXT, &interval);
+  EXPECT_EQ(interval, 0u);
+  glXSwapIntervalEXT(dpy_, win, 2);
+  glXQueryDrawable(dpy_, win, GLX_SWAP_INTERVAL_EXT, &interval);
+  EXPECT_EQ(interval, 2u);
+  EXPECT_EQ(glXGetSwapIntervalMESA(), 2);
+  EXPECT_EQ(glXSwapIntervalSGI(0), GLX_BAD_VALUE);
+  glXSwapBuffers(dpy_, win);
+  const auto start = std::chrono::steady_clock::now();
+  for (int i = 0; i < 4; ++i) glXSwapBuffers(dpy_, win);
+  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_GE(ms, 4 * 2 * 16.0);  // four swaps, two 60 Hz periods apart
+  EXPECT_EQ(glXSwapIntervalMESA(0), 0);
+  EXPECT_EQ(glXGetSwapIntervalMESA(), 0);
   glXMakeCurrent(dpy_, None, nullptr);
   glXDestroyContext(dpy_, ctx);
 }

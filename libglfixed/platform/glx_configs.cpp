@@ -213,25 +213,25 @@ int* field(Request& r, int attribute) {
 
 // glXChooseVisual's list: GLX_RGBA, GLX_DOUBLEBUFFER and GLX_STEREO stand
 // alone; without GLX_DOUBLEBUFFER only single-buffered visuals match (GLX
-// 1.4 §3.3.10), without GLX_RGBA only colour-index ones (none here).
-bool parseVisualList(const int* list, Request* r) {
+// 1.4 §3.3.10). As Mesa answers (reference/MESA_FACTS.md, "GLX"): a list
+// without GLX_RGBA still gets an RGBA visual (there are no colour-index
+// ones), and an unknown attribute is skipped with its value.
+void parseVisualList(const int* list, Request* r) {
   r->doubleBuffer = False;
-  r->renderType = 0;  // colour index unless GLX_RGBA
   for (int i = 0; list && list[i] != None; ++i) {
     const int a = list[i];
-    if (a == GLX_USE_GL) continue;
-    if (a == GLX_RGBA) { r->renderType = GLX_RGBA_BIT; continue; }
+    if (a == GLX_USE_GL || a == GLX_RGBA) continue;
     if (a == GLX_DOUBLEBUFFER) { r->doubleBuffer = True; continue; }
     if (a == GLX_STEREO) { r->stereo = True; continue; }
-    int* f = field(*r, a);
-    if (!f) return false;
-    *f = list[++i];
+    const int v = list[++i];
+    if (v == None) break;
+    if (int* f = field(*r, a)) *f = v;
   }
-  return true;
 }
 
-// glXChooseFBConfig's list: pairs; GLX_DONT_CARE leaves an attribute out.
-bool parseFBConfigList(const int* list, Request* r) {
+// glXChooseFBConfig's list: pairs; GLX_DONT_CARE leaves an attribute out;
+// an unknown attribute is skipped (as Mesa does).
+void parseFBConfigList(const int* list, Request* r) {
   for (int i = 0; list && list[i] != None; i += 2) {
     const int a = list[i], v = list[i + 1];
     switch (a) {
@@ -241,18 +241,12 @@ bool parseFBConfigList(const int* list, Request* r) {
       case GLX_DRAWABLE_TYPE: r->drawableType = v; break;
       case GLX_X_RENDERABLE: r->xRenderable = v; break;
       case GLX_FBCONFIG_ID: r->fbconfigId = v; break;
-      case GLX_MAX_PBUFFER_WIDTH: case GLX_MAX_PBUFFER_HEIGHT: case GLX_MAX_PBUFFER_PIXELS:
-      case GLX_VISUAL_ID: case GLX_TRANSPARENT_INDEX_VALUE: case GLX_TRANSPARENT_RED_VALUE:
-      case GLX_TRANSPARENT_GREEN_VALUE: case GLX_TRANSPARENT_BLUE_VALUE: case GLX_TRANSPARENT_ALPHA_VALUE:
-        break;  // ignored in selection (table 3.4)
-      default: {
-        int* f = field(*r, a);
-        if (!f) return false;
-        *f = v;
-      }
+      default:
+        // Attributes ignored in selection (GLX_MAX_PBUFFER_*, GLX_VISUAL_ID,
+        // the transparent values, table 3.4) and unknown ones fall here.
+        if (int* f = field(*r, a)) *f = v;
     }
   }
-  return true;
 }
 
 bool atLeast(int have, int want) { return want == kDontCare || have >= want; }
@@ -331,7 +325,8 @@ GLAPI XVisualInfo* APIENTRY glXChooseVisual(Display* dpy, int screen, int* attri
   std::lock_guard<std::recursive_mutex> lock(glxMutex());
   DisplayState* ds = displayState(dpy);
   Request r;
-  if (!ds || !parseVisualList(attribList, &r)) return nullptr;
+  if (!ds) return nullptr;
+  parseVisualList(attribList, &r);
   const auto configs = choose(*ds, screen, r, true);
   if (configs.empty()) return nullptr;
   ds->visualChoice[configs[0]->visualId] = configs[0];
@@ -371,7 +366,8 @@ GLAPI GLXFBConfig* APIENTRY glXChooseFBConfig(Display* dpy, int screen, const in
   *nitems = 0;
   DisplayState* ds = displayState(dpy);
   Request r;
-  if (!ds || !parseFBConfigList(attribList, &r)) return nullptr;
+  if (!ds) return nullptr;
+  parseFBConfigList(attribList, &r);
   return copyOut(choose(*ds, screen, r, false), nitems);
 }
 

@@ -162,10 +162,20 @@ TEST_F(GlxTest, ChooseVisualFollowsTheAttributes) {
   EXPECT_EQ(vis->depth, 32);
   XFree(vis);
 
-  EXPECT_EQ(chooseVisual({GLX_DOUBLEBUFFER}), nullptr);  // colour index: none
   EXPECT_EQ(chooseVisual({GLX_RGBA, GLX_STEREO}), nullptr);
-  EXPECT_EQ(chooseVisual({GLX_RGBA, GLX_ACCUM_RED_SIZE, 1}), nullptr);
-  EXPECT_EQ(chooseVisual({GLX_RGBA, 0x7777, 1}), nullptr);
+  EXPECT_EQ(chooseVisual({GLX_RGBA, GLX_ACCUM_RED_SIZE, 1}), nullptr);  // no accumulation buffer
+  // As Mesa: no GLX_RGBA still gives an RGBA visual; an unknown attribute
+  // is skipped with its value.
+  vis = chooseVisual({GLX_DOUBLEBUFFER});
+  ASSERT_NE(vis, nullptr);
+  EXPECT_EQ(config(vis, GLX_RGBA), True);
+  EXPECT_EQ(config(vis, GLX_DOUBLEBUFFER), True);
+  XFree(vis);
+  vis = chooseVisual({GLX_RGBA, 0x7777, GLX_DOUBLEBUFFER, GLX_DEPTH_SIZE, 16});
+  ASSERT_NE(vis, nullptr);
+  EXPECT_EQ(config(vis, GLX_DOUBLEBUFFER), False);  // GLX_DOUBLEBUFFER was 0x7777's value
+  EXPECT_EQ(config(vis, GLX_DEPTH_SIZE), 24);
+  XFree(vis);
 }
 
 TEST_F(GlxTest, ChooseFBConfigSortsAndFilters) {
@@ -209,8 +219,13 @@ TEST_F(GlxTest, ChooseFBConfigSortsAndFilters) {
   EXPECT_EQ(attrib(configs[0], GLX_FBCONFIG_ID), id);
   XFree(configs);
 
-  const int bad[] = {0x7777, 1, None};
-  EXPECT_EQ(glXChooseFBConfig(dpy_, 0, bad, &n), nullptr);
+  const int unknown[] = {0x7777, 1, GLX_DOUBLEBUFFER, True, None};  // skipped, as Mesa does
+  configs = glXChooseFBConfig(dpy_, 0, unknown, &n);
+  ASSERT_GT(n, 0);
+  EXPECT_EQ(attrib(configs[0], GLX_DOUBLEBUFFER), True);
+  XFree(configs);
+  const int stereo[] = {GLX_STEREO, True, None};
+  EXPECT_EQ(glXChooseFBConfig(dpy_, 0, stereo, &n), nullptr);
   EXPECT_EQ(n, 0);
 }
 

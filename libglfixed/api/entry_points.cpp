@@ -2,6 +2,9 @@
 
 #include <GL/gl.h>
 #include <GL/osmesa.h>
+// GLX (platform/glx*.cpp): the declarations of the GLX block below.
+#define GLX_GLXEXT_PROTOTYPES
+#include <GL/glx.h>
 
 #include <cstdio>
 #include <cstring>
@@ -78,11 +81,43 @@ const Entry kOsmesaEntries[] = {
 };
 #undef OSMESA_ENTRY
 
+// GLX (platform/glx*.cpp): GLX 1.4 and the GLX extensions offered, so that
+// glXGetProcAddress answers for GLX names too.
+#define GLX_ENTRY(name) {#name, reinterpret_cast<void*>(&name), nullptr}
+const Entry kGlxEntries[] = {
+    GLX_ENTRY(glXChooseVisual),          GLX_ENTRY(glXCreateContext),
+    GLX_ENTRY(glXDestroyContext),        GLX_ENTRY(glXMakeCurrent),
+    GLX_ENTRY(glXCopyContext),           GLX_ENTRY(glXSwapBuffers),
+    GLX_ENTRY(glXCreateGLXPixmap),       GLX_ENTRY(glXDestroyGLXPixmap),
+    GLX_ENTRY(glXQueryExtension),        GLX_ENTRY(glXQueryVersion),
+    GLX_ENTRY(glXIsDirect),              GLX_ENTRY(glXGetConfig),
+    GLX_ENTRY(glXGetCurrentContext),     GLX_ENTRY(glXGetCurrentDrawable),
+    GLX_ENTRY(glXWaitGL),                GLX_ENTRY(glXWaitX),
+    GLX_ENTRY(glXUseXFont),              GLX_ENTRY(glXQueryExtensionsString),
+    GLX_ENTRY(glXQueryServerString),     GLX_ENTRY(glXGetClientString),
+    GLX_ENTRY(glXGetCurrentDisplay),     GLX_ENTRY(glXGetFBConfigs),
+    GLX_ENTRY(glXChooseFBConfig),        GLX_ENTRY(glXGetFBConfigAttrib),
+    GLX_ENTRY(glXGetVisualFromFBConfig), GLX_ENTRY(glXCreateWindow),
+    GLX_ENTRY(glXDestroyWindow),         GLX_ENTRY(glXCreatePixmap),
+    GLX_ENTRY(glXDestroyPixmap),         GLX_ENTRY(glXCreatePbuffer),
+    GLX_ENTRY(glXDestroyPbuffer),        GLX_ENTRY(glXQueryDrawable),
+    GLX_ENTRY(glXCreateNewContext),      GLX_ENTRY(glXMakeContextCurrent),
+    GLX_ENTRY(glXGetCurrentReadDrawable), GLX_ENTRY(glXQueryContext),
+    GLX_ENTRY(glXSelectEvent),           GLX_ENTRY(glXGetSelectedEvent),
+    GLX_ENTRY(glXGetProcAddress),        GLX_ENTRY(glXGetProcAddressARB),
+    GLX_ENTRY(glXCreateContextAttribsARB), GLX_ENTRY(glXQueryContextInfoEXT),
+    GLX_ENTRY(glXSwapIntervalEXT),       GLX_ENTRY(glXSwapIntervalMESA),
+    GLX_ENTRY(glXGetSwapIntervalMESA),   GLX_ENTRY(glXSwapIntervalSGI),
+};
+#undef GLX_ENTRY
+
 const Entry* find(const char* name) {
   if (!name) return nullptr;
   for (const Entry& e : kGlEntries)
     if (std::strcmp(e.name, name) == 0) return &e;
   for (const Entry& e : kOsmesaEntries)
+    if (std::strcmp(e.name, name) == 0) return &e;
+  for (const Entry& e : kGlxEntries)
     if (std::strcmp(e.name, name) == 0) return &e;
   return nullptr;
 }

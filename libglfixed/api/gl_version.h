@@ -21,4 +21,10 @@ constexpr const char* kGLExtensionsString =
     "GL_EXT_draw_range_elements GL_EXT_multi_draw_arrays GL_EXT_point_parameters GL_EXT_provoking_vertex "
     "GL_EXT_rescale_normal GL_EXT_separate_specular_color GL_EXT_vertex_array";
 
+// True if a context of version major.minor can be had (the library's own
+// version or an earlier one): glXCreateContextAttribsARB, eglCreateContext.
+constexpr bool glVersionAvailable(int major, int minor) {
+  return major < kGLMajorVersion || (major == kGLMajorVersion && minor <= kGLMinorVersion);
+}
+
 }  // namespace glfixed

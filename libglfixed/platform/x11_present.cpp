@@ -1,5 +1,7 @@
 #include "platform/x11_present.h"
 
+#include "platform/x11_error_trap.h"
+
 #include <X11/Xutil.h>
 #include <X11/extensions/XShm.h>
 #include <sys/ipc.h>
@@ -12,36 +14,6 @@
 namespace glfixed::platform {
 
 namespace {
-
-// X errors raised by our own requests are caught here, not by the program's
-// handler (whose default exits). The handler is process-wide: one request
-// at a time.
-std::mutex gErrorTrapMutex;
-bool gErrorTrapped = false;
-int trapError(Display*, XErrorEvent*) {
-  gErrorTrapped = true;
-  return 0;
-}
-
-class ErrorTrap {
- public:
-  explicit ErrorTrap(Display* display) : display_(display), lock_(gErrorTrapMutex) {
-    XSync(display_, False);  // errors of earlier requests stay the program's
-    gErrorTrapped = false;
-    previous_ = XSetErrorHandler(trapError);
-  }
-  ~ErrorTrap() { XSetErrorHandler(previous_); }
-  // Waits for the server, then tells whether one of our requests failed.
-  bool failed() {
-    XSync(display_, False);
-    return gErrorTrapped;
-  }
-
- private:
-  Display* display_;
-  std::lock_guard<std::mutex> lock_;
-  int (*previous_)(Display*, XErrorEvent*) = nullptr;
-};
 
 class X11Presenter : public Presenter {
  public:

@@ -117,4 +117,17 @@ bool AttribStack::pop(Context& ctx) {
   return true;
 }
 
+void copyAttribGroups(Context& src, Context& dst, GLbitfield mask) {
+  AttribNode n;
+  n.mask = mask;
+  for (const Group& g : kGroups)
+    if (mask & g.bit) {
+      g.save(src, n);
+      g.restore(dst, n);
+    }
+  dst.markChanged(mask, kDirtyAll);
+  if ((mask & (GL_CURRENT_BIT | GL_LIGHTING_BIT | GL_ENABLE_BIT)) && dst.lighting.colorMaterial)
+    trackColorMaterial(dst);
+}
+
 }  // namespace glfixed

@@ -65,4 +65,9 @@ class AttribStack {
   int depth_ = 0;
 };
 
+// glXCopyContext: the groups of `mask` (GL_ALL_ATTRIB_BITS: all) go from
+// `src` to `dst` as glPushAttrib would save them and glPopAttrib restore them.
+// The caller has drawn both contexts' buffered vertices.
+void copyAttribGroups(Context& src, Context& dst, GLbitfield mask);
+
 }  // namespace glfixed

@@ -434,9 +434,12 @@ TEST_F(GlxTest, CreateContextAttribsGivesAtMostTheLibrarysVersion) {
   const int db[] = {GLX_DOUBLEBUFFER, True, None};
   GLXFBConfig* configs = glXChooseFBConfig(dpy_, 0, db, &n);
   ASSERT_GT(n, 0);
-  const int v21[] = {GLX_CONTEXT_MAJOR_VERSION_ARB, 2, GLX_CONTEXT_MINOR_VERSION_ARB, 1, None};
-  GLXContext ctx = create(dpy_, configs[0], nullptr, True, v21);
+  // The library is GL 1.5 (no GLSL, api/gl_version.h).
+  const int v15[] = {GLX_CONTEXT_MAJOR_VERSION_ARB, 1, GLX_CONTEXT_MINOR_VERSION_ARB, 5, None};
+  GLXContext ctx = create(dpy_, configs[0], nullptr, True, v15);
   EXPECT_NE(ctx, nullptr);
+  const int v20[] = {GLX_CONTEXT_MAJOR_VERSION_ARB, 2, GLX_CONTEXT_MINOR_VERSION_ARB, 0, None};
+  EXPECT_EQ(create(dpy_, configs[0], nullptr, True, v20), nullptr);
   const int v32core[] = {GLX_CONTEXT_MAJOR_VERSION_ARB, 3, GLX_CONTEXT_MINOR_VERSION_ARB, 2,
                          GLX_CONTEXT_PROFILE_MASK_ARB, GLX_CONTEXT_CORE_PROFILE_BIT_ARB, None};
   EXPECT_EQ(create(dpy_, configs[0], nullptr, True, v32core), nullptr);

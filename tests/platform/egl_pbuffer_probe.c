@@ -1,0 +1,159 @@
+/* An EGL pbuffer program with no X server: the surfaceless platform, a lit
+   triangle in a pbuffer, read back with glReadPixels. Built against the
+   system's libEGL and libGL (Mesa's), it runs once on Mesa and once with
+   LD_LIBRARY_PATH naming the drop-in folder (libglfixed); it prints the EGL and
+   GL facts it sees and writes the pixels to a file, and
+   `egl_pbuffer_probe --compare a b` compares two such files within the
+   fidelity bar (no pixel covered on one side only, >= 99.99% identical, no
+   channel off by more than 1). */
+#include <EGL/egl.h>
+#include <EGL/eglext.h>
+#include <GL/gl.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+enum { W = 64, H = 48 };
+
+static int compare(const char* a, const char* b) {
+  static unsigned char pa[W * H * 4], pb[W * H * 4];
+  FILE* fa = fopen(a, "rb");
+  FILE* fb = fopen(b, "rb");
+  if (!fa || !fb || fread(pa, 1, sizeof pa, fa) != sizeof pa || fread(pb, 1, sizeof pb, fb) != sizeof pb) {
+    fprintf(stderr, "cannot read %s or %s\n", a, b);
+    return 2;
+  }
+  int covered = 0, coverageMismatch = 0, exact = 0, maxDiff = 0;
+  for (int i = 0; i < W * H; ++i) {
+    const unsigned char* x = pa + 4 * i;
+    const unsigned char* y = pb + 4 * i;
+    /* The clear colour is (0, 0, 0, 255): anything else is covered. */
+    int cx = x[0] || x[1] || x[2], cy = y[0] || y[1] || y[2];
+    if (cx != cy) ++coverageMismatch;
+    if (!cx && !cy) continue;
+    ++covered;
+    int d = 0;
+    for (int c = 0; c < 4; ++c) {
+      int e = abs(x[c] - y[c]);
+      if (e > d) d = e;
+    }
+    if (d == 0) ++exact;
+    if (d > maxDiff) maxDiff = d;
+  }
+  printf("covered %d, coverage mismatches %d, exact %d, max channel difference %d\n", covered,
+         coverageMismatch, exact, maxDiff);
+  return covered > 100 && coverageMismatch == 0 && exact * 10000.0 >= covered * 9999.0 && maxDiff <= 1 ? 0
+                                                                                                       : 1;
+}
+
+static void fact(const char* what, long value) { printf("%s: 0x%lx\n", what, value); }
+
+int main(int argc, char** argv) {
+  if (argc == 4 && strcmp(argv[1], "--compare") == 0) return compare(argv[2], argv[3]);
+  const char* out = argc > 1 ? argv[1] : "egl_pbuffer.rgba";
+  /* "smooth": the lit triangle smooth-shaded (see MESA_FACTS.md, "EGL":
+     Mesa renders window-system buffers upside down, which moves its
+     interpolation by one here and there); flat by default. */
+  const int smooth = argc > 2 && strcmp(argv[2], "smooth") == 0;
+  PFNEGLGETPLATFORMDISPLAYEXTPROC getPlatformDisplay =
+      (PFNEGLGETPLATFORMDISPLAYEXTPROC)eglGetProcAddress("eglGetPlatformDisplayEXT");
+  if (!getPlatformDisplay) return fprintf(stderr, "no eglGetPlatformDisplayEXT\n"), 1;
+  EGLDisplay dpy = getPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, NULL);
+  EGLint major = 0, minor = 0;
+  if (!eglInitialize(dpy, &major, &minor)) return fprintf(stderr, "eglInitialize failed\n"), 1;
+  printf("EGL %d.%d, vendor %s\n", major, minor, eglQueryString(dpy, EGL_VENDOR));
+
+  /* Errors and refusals. */
+  fact("initial eglQueryAPI", eglQueryAPI());
+  fact("eglBindAPI(EGL_OPENVG_API) returns", eglBindAPI(EGL_OPENVG_API));
+  fact("  then eglGetError", eglGetError());
+  EGLint n = -1;
+  const EGLint windowDefault[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
+  eglChooseConfig(dpy, windowDefault, NULL, 0, &n);
+  fact("configs for a window (default EGL_SURFACE_TYPE) on surfaceless", n);
+  const EGLint bad[] = {0x7777, 1, EGL_NONE};
+  fact("eglChooseConfig(unknown attribute) returns", eglChooseConfig(dpy, bad, NULL, 0, &n));
+  fact("  then eglGetError", eglGetError());
+
+  const EGLint attribs[] = {EGL_SURFACE_TYPE,
+                            EGL_PBUFFER_BIT,
+                            EGL_RENDERABLE_TYPE,
+                            EGL_OPENGL_BIT,
+                            EGL_RED_SIZE,
+                            8,
+                            EGL_DEPTH_SIZE,
+                            16,
+                            EGL_NONE};
+  EGLConfig config;
+  if (!eglChooseConfig(dpy, attribs, &config, 1, &n) || n < 1) return fprintf(stderr, "no config\n"), 1;
+  EGLint v;
+  eglGetConfigAttrib(dpy, config, EGL_DEPTH_SIZE, &v);
+  fact("chosen config: depth", v);
+  eglGetConfigAttrib(dpy, config, EGL_ALPHA_SIZE, &v);
+  fact("chosen config: alpha", v);
+  eglGetConfigAttrib(dpy, config, EGL_NATIVE_VISUAL_ID, &v);
+  fact("chosen config: native visual id", v);
+  eglBindAPI(EGL_OPENGL_API);
+  const EGLint core[] = {EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
+  EGLContext coreCtx = eglCreateContext(dpy, config, EGL_NO_CONTEXT, core);
+  fact("core profile mask, no version: context made", coreCtx != EGL_NO_CONTEXT);
+  if (coreCtx) eglDestroyContext(dpy, coreCtx);
+  const EGLint pbAttribs[] = {EGL_WIDTH, W, EGL_HEIGHT, H, EGL_NONE};
+  EGLSurface pb = eglCreatePbufferSurface(dpy, config, pbAttribs);
+  EGLContext ctx = eglCreateContext(dpy, config, EGL_NO_CONTEXT, NULL);
+  if (!pb || !ctx || !eglMakeCurrent(dpy, pb, pb, ctx)) return fprintf(stderr, "no pbuffer context\n"), 1;
+  eglQuerySurface(dpy, pb, EGL_RENDER_BUFFER, &v);
+  fact("pbuffer EGL_RENDER_BUFFER", v);
+  GLint drawBuffer = 0;
+  glGetIntegerv(GL_DRAW_BUFFER, &drawBuffer);
+  fact("pbuffer GL_DRAW_BUFFER", drawBuffer);
+  GLint viewport[4];
+  glGetIntegerv(GL_VIEWPORT, viewport);
+  printf("viewport %d %d %d %d\n", viewport[0], viewport[1], viewport[2], viewport[3]);
+  fact("eglSwapBuffers on a pbuffer returns", eglSwapBuffers(dpy, pb));
+
+  /* A lit, depth-tested triangle over a smaller one. */
+  glClearColor(0, 0, 0, 1);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glEnable(GL_DEPTH_TEST);
+  glShadeModel(smooth ? GL_SMOOTH : GL_FLAT);
+  glEnable(GL_LIGHTING);
+  glEnable(GL_LIGHT0);
+  const GLfloat lightPos[] = {0.3f, 0.5f, 1.0f, 0.0f};
+  const GLfloat diffuse[] = {0.9f, 0.6f, 0.3f, 1.0f};
+  glLightfv(GL_LIGHT0, GL_POSITION, lightPos);
+  glMaterialfv(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE, diffuse);
+  glMatrixMode(GL_PROJECTION);
+  glFrustum(-1, 1, -0.75, 0.75, 1, 10);
+  glMatrixMode(GL_MODELVIEW);
+  glTranslatef(0, 0, -3);
+  glRotatef(30, 1, 0.5f, 0);
+  glBegin(GL_TRIANGLES);
+  glNormal3f(0, 0, 1);
+  glVertex3f(-1.2f, -1, 0);
+  glNormal3f(0.5f, 0, 0.8f);
+  glVertex3f(1.2f, -0.8f, 0.2f);
+  glNormal3f(0, 0.6f, 0.8f);
+  glVertex3f(0, 1.1f, -0.2f);
+  glEnd();
+  glDisable(GL_LIGHTING);
+  glColor3f(0.2f, 0.8f, 0.4f);
+  glBegin(GL_TRIANGLES);
+  glVertex3f(-0.5f, -0.5f, 0.5f);
+  glVertex3f(0.5f, -0.5f, -0.5f);
+  glVertex3f(0, 0.5f, 0.3f);
+  glEnd();
+  static unsigned char pixels[W * H * 4];
+  glReadPixels(0, 0, W, H, GL_RGBA, GL_UNSIGNED_BYTE, pixels);
+  fact("glGetError", glGetError());
+  FILE* f = fopen(out, "wb");
+  if (!f || fwrite(pixels, 1, sizeof pixels, f) != sizeof pixels)
+    return fprintf(stderr, "cannot write %s\n", out), 1;
+  fclose(f);
+  printf("renderer %s\n", (const char*)glGetString(GL_RENDERER));
+  eglMakeCurrent(dpy, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+  eglDestroySurface(dpy, pb);
+  eglDestroyContext(dpy, ctx);
+  eglTerminate(dpy);
+  return 0;
+}

@@ -434,6 +434,29 @@ TEST(EglNoDisplay, SharedDisplayListsAndThreads) {
   for (EGLContext c : {first, second, alone}) EXPECT_TRUE(eglDestroyContext(dpy, c));
 }
 
+TEST(EglNoDisplay, FencesAreSignaledAtOnce) {
+  EGLDisplay dpy = initializedDefault();
+  ASSERT_TRUE(eglBindAPI(EGL_OPENGL_API));
+  EXPECT_EQ(eglCreateSync(dpy, EGL_SYNC_FENCE, nullptr), EGL_NO_SYNC);  // no current context
+  EXPECT_EQ(eglGetError(), EGL_BAD_MATCH);
+  EGLContext ctx = eglCreateContext(dpy, pbufferConfig(dpy), EGL_NO_CONTEXT, nullptr);
+  ASSERT_TRUE(eglMakeCurrent(dpy, EGL_NO_SURFACE, EGL_NO_SURFACE, ctx));
+  EXPECT_EQ(eglCreateSync(dpy, EGL_SYNC_REUSABLE_KHR, nullptr), EGL_NO_SYNC);
+  EXPECT_EQ(eglGetError(), EGL_BAD_PARAMETER);
+  EGLSync sync = eglCreateSync(dpy, EGL_SYNC_FENCE, nullptr);
+  ASSERT_NE(sync, EGL_NO_SYNC);
+  EGLAttrib status = 0;
+  EXPECT_TRUE(eglGetSyncAttrib(dpy, sync, EGL_SYNC_STATUS, &status));
+  EXPECT_EQ(status, EGL_SIGNALED);
+  EXPECT_EQ(eglClientWaitSync(dpy, sync, EGL_SYNC_FLUSH_COMMANDS_BIT, EGL_FOREVER), EGL_CONDITION_SATISFIED);
+  EXPECT_TRUE(eglWaitSync(dpy, sync, 0));
+  EXPECT_TRUE(eglDestroySync(dpy, sync));
+  EXPECT_FALSE(eglDestroySync(dpy, sync));
+  EXPECT_EQ(eglGetError(), EGL_BAD_PARAMETER);
+  ASSERT_TRUE(eglMakeCurrent(dpy, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT));
+  EXPECT_TRUE(eglDestroyContext(dpy, ctx));
+}
+
 TEST(EglNoDisplay, GetProcAddress) {
   EXPECT_EQ(reinterpret_cast<void*>(eglGetProcAddress("glBegin")), reinterpret_cast<void*>(&glBegin));
   EXPECT_EQ(reinterpret_cast<void*>(eglGetProcAddress("eglGetPlatformDisplayEXT")),
@@ -567,6 +590,19 @@ TEST(EglX11, WindowSurfaceSwapsToTheWindow) {
   ASSERT_NE(image, nullptr);
   EXPECT_EQ(XGetPixel(image, 79, 59) & 0xffffff, 0x00ff00u);
   XDestroyImage(image);
+
+  // eglCopyBuffers: the window surface's colour buffer into a pixmap.
+  const Pixmap copy = XCreatePixmap(x, win, 80, 60, 24);
+  glClearColor(1, 1, 0, 1);
+  glClear(GL_COLOR_BUFFER_BIT);
+  ASSERT_TRUE(eglCopyBuffers(dpy, surface, copy));
+  image = XGetImage(x, copy, 0, 0, 80, 60, AllPlanes, ZPixmap);
+  ASSERT_NE(image, nullptr);
+  EXPECT_EQ(XGetPixel(image, 40, 30) & 0xffffff, 0xffff00u);
+  XDestroyImage(image);
+  XFreePixmap(x, copy);
+  EXPECT_FALSE(eglCopyBuffers(dpy, surface, 0x3ffffe));
+  EXPECT_EQ(eglGetError(), EGL_BAD_NATIVE_PIXMAP);
 
   // A pixmap surface: glFinish brings what was drawn to the pixmap.
   const Pixmap pixmap = XCreatePixmap(x, win, 16, 16, 24);

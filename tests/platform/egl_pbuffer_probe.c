@@ -51,10 +51,8 @@ static void fact(const char* what, long value) { printf("%s: 0x%lx\n", what, val
 int main(int argc, char** argv) {
   if (argc == 4 && strcmp(argv[1], "--compare") == 0) return compare(argv[2], argv[3]);
   const char* out = argc > 1 ? argv[1] : "egl_pbuffer.rgba";
-  /* "smooth": the lit triangle smooth-shaded (see MESA_FACTS.md, "EGL":
-     Mesa renders window-system buffers upside down, which moves its
-     interpolation by one here and there); flat by default. */
-  const int smooth = argc > 2 && strcmp(argv[2], "smooth") == 0;
+  /* "flat": the lit triangle flat-shaded; smooth by default. */
+  const int smooth = !(argc > 2 && strcmp(argv[2], "flat") == 0);
   PFNEGLGETPLATFORMDISPLAYEXTPROC getPlatformDisplay =
       (PFNEGLGETPLATFORMDISPLAYEXTPROC)eglGetProcAddress("eglGetPlatformDisplayEXT");
   if (!getPlatformDisplay) return fprintf(stderr, "no eglGetPlatformDisplayEXT\n"), 1;
@@ -84,8 +82,20 @@ int main(int argc, char** argv) {
                             EGL_DEPTH_SIZE,
                             16,
                             EGL_NONE};
-  EGLConfig config;
-  if (!eglChooseConfig(dpy, attribs, &config, 1, &n) || n < 1) return fprintf(stderr, "no config\n"), 1;
+  /* EGL 1.5 §3.4.1 sorts the larger sum of the requested colour sizes first,
+     so Mesa answers with its 10-bit configurations before the 8-bit ones:
+     take the first with 8 bits of red and no alpha, as libglfixed has. */
+  EGLConfig configs[256], config = NULL;
+  if (!eglChooseConfig(dpy, attribs, configs, 256, &n) || n < 1) return fprintf(stderr, "no config\n"), 1;
+  EGLint red = 0, alphaBits = -1;
+  eglGetConfigAttrib(dpy, configs[0], EGL_RED_SIZE, &red);
+  fact("first config's red size", red);
+  for (int i = 0; i < n && !config; ++i) {
+    eglGetConfigAttrib(dpy, configs[i], EGL_RED_SIZE, &red);
+    eglGetConfigAttrib(dpy, configs[i], EGL_ALPHA_SIZE, &alphaBits);
+    if (red == 8 && alphaBits == 0) config = configs[i];
+  }
+  if (!config) return fprintf(stderr, "no 8-bit config\n"), 1;
   EGLint v;
   eglGetConfigAttrib(dpy, config, EGL_DEPTH_SIZE, &v);
   fact("chosen config: depth", v);

@@ -316,7 +316,7 @@ EGLAPI EGLBoolean EGLAPIENTRY eglMakeCurrent(EGLDisplay dpy, EGLSurface draw, EG
   if (boundElsewhere(ds) || boundElsewhere(rs)) return fail(EGL_BAD_ACCESS, EGL_FALSE);
   if ((ds && ds->config != c->config) || (rs && rs->config != c->config))
     return fail(EGL_BAD_MATCH, EGL_FALSE);
-  bindCurrent(c, ds, rs);
+  if (!bindCurrent(c, ds, rs)) return fail(EGL_BAD_ALLOC, EGL_FALSE);
   return succeed(EGL_TRUE);
 }
 

@@ -161,7 +161,7 @@ const FramebufferConfig* findConfig(EglDisplay& d, EGLConfig handle) {
   return fail(EGL_BAD_CONFIG, nullptr);
 }
 
-void bindCurrent(EglContext* ctx, EglSurface* draw, EglSurface* read) {
+bool bindCurrent(EglContext* ctx, EglSurface* draw, EglSurface* read) {
   ThreadState& t = thread();
   EglContext* old = t.context;
   if (old) {
@@ -174,8 +174,15 @@ void bindCurrent(EglContext* ctx, EglSurface* draw, EglSurface* read) {
     if (old->read && old->read != old->draw) --old->read->boundCount;
     old->draw = old->read = nullptr;
   }
-  makeCurrent(ctx ? ctx->context.get() : nullptr, draw ? draw->surface.get() : nullptr,
-              read ? read->surface.get() : nullptr);
+  try {
+    makeCurrent(ctx ? ctx->context.get() : nullptr, draw ? draw->surface.get() : nullptr,
+                read ? read->surface.get() : nullptr);
+  } catch (const std::bad_alloc&) {
+    makeCurrent(nullptr, nullptr, nullptr);
+    t.context = nullptr;
+    if (old) reap(*old->display);
+    return false;
+  }
   t.context = ctx;
   if (ctx) {
     ctx->current = true;
@@ -185,6 +192,7 @@ void bindCurrent(EglContext* ctx, EglSurface* draw, EglSurface* read) {
     if (read && read != draw) ++read->boundCount;
   }
   if (old) reap(*old->display);  // may free `old`
+  return true;
 }
 
 }  // namespace glfixed::platform::egl

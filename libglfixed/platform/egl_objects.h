@@ -14,6 +14,7 @@
 
 #include <memory>
 #include <mutex>
+#include <new>
 #include <vector>
 
 #include "platform/configs.h"
@@ -111,6 +112,16 @@ T succeed(T result) {
   thread().error = EGL_SUCCESS;
   return result;
 }
+// Runs `body`: an allocation that fails inside is EGL_BAD_ALLOC, so that no
+// exception leaves an entry point.
+template <typename T, typename F>
+T guarded(T onFailure, F body) {
+  try {
+    return body();
+  } catch (const std::bad_alloc&) {
+    return fail(EGL_BAD_ALLOC, onFailure);
+  }
+}
 
 // --- Displays (egl_display.cpp) ------------------------------------------
 // Null, with the error recorded, unless `handle` is a display of ours (and,
@@ -132,8 +143,9 @@ EglContext* findContext(EglDisplay& d, EGLContext handle);
 const FramebufferConfig* findConfig(EglDisplay& d, EGLConfig handle);
 
 // Binds (ctx, draw, read) to this thread, releasing what it had, and frees
-// what was destroyed while bound once nothing holds it.
-void bindCurrent(EglContext* ctx, EglSurface* draw, EglSurface* read);
+// what was destroyed while bound once nothing holds it. False (nothing
+// current then) if the context's depth buffer could not be allocated.
+bool bindCurrent(EglContext* ctx, EglSurface* draw, EglSurface* read);
 
 // --- Configurations (egl_config.cpp) -------------------------------------
 // The configurations an EGL display offers: the double-buffered entries of

@@ -65,8 +65,7 @@ const FramebufferConfig* surfaceConfig(EGLDisplay dpy, EGLConfig config, EGLint 
   return c;
 }
 
-EGLSurface createWindowSurface(EGLDisplay dpy, EGLConfig config, Window window, const EGLAttrib* attribs) {
-  Lock lock(registryMutex());
+EGLSurface newWindowSurface(EGLDisplay dpy, EGLConfig config, Window window, const EGLAttrib* attribs) {
   EglDisplay* d = nullptr;
   const FramebufferConfig* c = surfaceConfig(dpy, config, EGL_WINDOW_BIT, &d);
   if (!c) return EGL_NO_SURFACE;
@@ -100,8 +99,12 @@ EGLSurface createWindowSurface(EGLDisplay dpy, EGLConfig config, Window window, 
   return addSurface(*d, std::move(s));
 }
 
-EGLSurface createPixmapSurface(EGLDisplay dpy, EGLConfig config, Pixmap pixmap, const EGLAttrib* attribs) {
+EGLSurface createWindowSurface(EGLDisplay dpy, EGLConfig config, Window window, const EGLAttrib* attribs) {
   Lock lock(registryMutex());
+  return guarded(EGL_NO_SURFACE, [&] { return newWindowSurface(dpy, config, window, attribs); });
+}
+
+EGLSurface newPixmapSurface(EGLDisplay dpy, EGLConfig config, Pixmap pixmap, const EGLAttrib* attribs) {
   EglDisplay* d = nullptr;
   const FramebufferConfig* c = surfaceConfig(dpy, config, EGL_PIXMAP_BIT, &d);
   if (!c) return EGL_NO_SURFACE;
@@ -124,6 +127,11 @@ EGLSurface createPixmapSurface(EGLDisplay dpy, EGLConfig config, Pixmap pixmap, 
   s->surface =
       std::make_unique<glfixed::platform::Surface>(width, height, false, c->alphaBits, std::move(presenter));
   return addSurface(*d, std::move(s));
+}
+
+EGLSurface createPixmapSurface(EGLDisplay dpy, EGLConfig config, Pixmap pixmap, const EGLAttrib* attribs) {
+  Lock lock(registryMutex());
+  return guarded(EGL_NO_SURFACE, [&] { return newPixmapSurface(dpy, config, pixmap, attribs); });
 }
 
 // The calling thread's context, if `s` is its draw surface.
@@ -333,8 +341,12 @@ EGLAPI EGLBoolean EGLAPIENTRY eglSwapBuffers(EGLDisplay dpy, EGLSurface surface)
   EglContext* c = contextDrawingTo(s);
   if (!c) return fail(EGL_BAD_SURFACE, EGL_FALSE);
   glfixed::pipeline::flushVertices(*c->context);
-  if (s->type == EGL_WINDOW_BIT) s->surface->swapBuffers();  // pbuffers and pixmaps: no effect
-  return succeed(EGL_TRUE);
+  if (s->type != EGL_WINDOW_BIT) return succeed(EGL_TRUE);  // pbuffers and pixmaps: no effect
+  // The swap reallocates the buffers of a window whose size changed.
+  return guarded(EGL_FALSE, [s] {
+    s->surface->swapBuffers();
+    return succeed(EGL_TRUE);
+  });
 }
 
 EGLAPI EGLBoolean EGLAPIENTRY eglSwapInterval(EGLDisplay dpy, EGLint interval) {

@@ -161,27 +161,48 @@ const FramebufferConfig* findConfig(EglDisplay& d, EGLConfig handle) {
   return fail(EGL_BAD_CONFIG, nullptr);
 }
 
+namespace {
+
+// Lets `c`'s GL context go of its surfaces without changing the thread's
+// current GL context.
+void letGoOfSurfaces(EglContext& c) {
+  Context& gl = *c.context;
+  if (c.draw) c.draw->surface->detach(&gl);
+  if (c.read) c.read->surface->detach(&gl);
+  bindSurfaces(gl, nullptr, nullptr);
+}
+
+}  // namespace
+
 bool bindCurrent(EglContext* ctx, EglSurface* draw, EglSurface* read) {
   ThreadState& t = thread();
   EglContext* old = t.context;
+  // OSMesaMakeCurrent may have made another context current on this thread
+  // since: releasing the EGL context must leave that one current.
+  const bool oldIsCurrentGL = old && currentContext() == old->context.get();
   if (old) {
     // eglMakeCurrent flushes the context it replaces (§3.7.3); what it drew
     // into a single-buffered window or a pixmap reaches it.
     pipeline::flushVertices(*old->context);
     if (old->draw && !old->draw->surface->doubleBuffered()) old->draw->surface->presentFront();
+    if (!oldIsCurrentGL) letGoOfSurfaces(*old);
     old->current = false;
     if (old->draw) --old->draw->boundCount;
     if (old->read && old->read != old->draw) --old->read->boundCount;
     old->draw = old->read = nullptr;
   }
-  try {
-    makeCurrent(ctx ? ctx->context.get() : nullptr, draw ? draw->surface.get() : nullptr,
-                read ? read->surface.get() : nullptr);
-  } catch (const std::bad_alloc&) {
-    makeCurrent(nullptr, nullptr, nullptr);
-    t.context = nullptr;
-    if (old) reap(*old->display);
-    return false;
+  bool bound = true;
+  if (ctx || oldIsCurrentGL) {
+    try {
+      makeCurrent(ctx ? ctx->context.get() : nullptr, draw ? draw->surface.get() : nullptr,
+                  read ? read->surface.get() : nullptr);
+    } catch (const std::bad_alloc&) {
+      // The depth buffer for the draw surface: nothing is bound then.
+      bindSurfaces(*ctx->context, nullptr, nullptr);
+      makeCurrent(nullptr, nullptr, nullptr);
+      ctx = nullptr;
+      bound = false;
+    }
   }
   t.context = ctx;
   if (ctx) {
@@ -192,7 +213,7 @@ bool bindCurrent(EglContext* ctx, EglSurface* draw, EglSurface* read) {
     if (read && read != draw) ++read->boundCount;
   }
   if (old) reap(*old->display);  // may free `old`
-  return true;
+  return bound;
 }
 
 }  // namespace glfixed::platform::egl

@@ -11,6 +11,7 @@
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
 #include <GL/gl.h>
+#include <GL/osmesa.h>
 #include <X11/Xlib.h>
 #include <X11/Xutil.h>
 #include <signal.h>
@@ -432,6 +433,33 @@ TEST(EglNoDisplay, SharedDisplayListsAndThreads) {
   EXPECT_EQ(eglGetCurrentContext(), alone);
   ASSERT_TRUE(eglMakeCurrent(dpy, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT));
   for (EGLContext c : {first, second, alone}) EXPECT_TRUE(eglDestroyContext(dpy, c));
+}
+
+// One library serves OSMesa and EGL: a context each, on one thread.
+TEST(EglNoDisplay, OSMesaContextMadeCurrentOverAnEglOne) {
+  EGLDisplay dpy = initializedDefault();
+  ASSERT_TRUE(eglBindAPI(EGL_OPENGL_API));
+  EGLConfig config = pbufferConfig(dpy);
+  const EGLint size[] = {EGL_WIDTH, 4, EGL_HEIGHT, 4, EGL_NONE};
+  EGLSurface pb = eglCreatePbufferSurface(dpy, config, size);
+  EGLContext ctx = eglCreateContext(dpy, config, EGL_NO_CONTEXT, nullptr);
+  ASSERT_TRUE(eglMakeCurrent(dpy, pb, pb, ctx));
+  OSMesaContext os = OSMesaCreateContextExt(OSMESA_RGBA, 0, 0, 0, nullptr);
+  ASSERT_NE(os, nullptr);
+  std::vector<uint8_t> buffer(4 * 4 * 4, 0);
+  ASSERT_TRUE(OSMesaMakeCurrent(os, buffer.data(), GL_UNSIGNED_BYTE, 4, 4));
+  // Releasing the EGL context leaves OSMesa's current; the EGL objects can go.
+  ASSERT_TRUE(eglMakeCurrent(dpy, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT));
+  EXPECT_EQ(OSMesaGetCurrentContext(), os);
+  EXPECT_TRUE(eglDestroyContext(dpy, ctx));
+  EXPECT_TRUE(eglDestroySurface(dpy, pb));
+  glClearColor(0, 1, 0, 1);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glFinish();
+  EXPECT_EQ(buffer[1], 255);
+  EXPECT_EQ(buffer[0], 0);
+  OSMesaMakeCurrent(nullptr, nullptr, 0, 0, 0);
+  OSMesaDestroyContext(os);
 }
 
 TEST(EglNoDisplay, FencesAreSignaledAtOnce) {

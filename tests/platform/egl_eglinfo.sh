@@ -9,7 +9,7 @@ set -u
 dropin=$1 out=$2
 mkdir -p "$out"
 command -v eglinfo > /dev/null || { echo "eglinfo is not installed (mesa-utils)"; exit 77; }
-env -u DISPLAY LD_LIBRARY_PATH="$dropin" eglinfo > "$out/nodisplay.txt" 2>&1
+env -u DISPLAY LD_PRELOAD="${GLFX_DROPIN_PRELOAD:-}" LD_LIBRARY_PATH="$dropin" eglinfo > "$out/nodisplay.txt" 2>&1
 rc=$?
 cat "$out/nodisplay.txt"
 [ $rc -eq 1 ] || { echo "eglinfo without a display: exit $rc, expected 1 (only X11 fails)"; exit 1; }
@@ -23,7 +23,7 @@ for n in 71 72 73 74 75; do
   i=0
   while [ $i -lt 50 ] && ! [ -e /tmp/.X11-unix/X$n ]; do sleep 0.1; i=$((i + 1)); done
   if kill -0 $xvfb 2> /dev/null; then
-    DISPLAY=:$n LD_LIBRARY_PATH="$dropin" eglinfo > "$out/x11.txt" 2>&1
+    DISPLAY=:$n LD_PRELOAD="${GLFX_DROPIN_PRELOAD:-}" LD_LIBRARY_PATH="$dropin" eglinfo > "$out/x11.txt" 2>&1
     rc=$?
     kill $xvfb
     wait $xvfb 2> /dev/null

@@ -8,7 +8,7 @@ probe=$1 dropin=$2 out=$3
 mkdir -p "$out"
 env -u DISPLAY -u LD_LIBRARY_PATH "$probe" "$out/mesa.rgba" > "$out/mesa.log" 2>&1 || {
   echo "the probe failed on Mesa:"; cat "$out/mesa.log"; exit 1; }
-env -u DISPLAY LD_LIBRARY_PATH="$dropin" "$probe" "$out/glfixed.rgba" > "$out/glfixed.log" 2>&1 || {
+env -u DISPLAY LD_PRELOAD="${GLFX_DROPIN_PRELOAD:-}" LD_LIBRARY_PATH="$dropin" "$probe" "$out/glfixed.rgba" > "$out/glfixed.log" 2>&1 || {
   echo "the probe failed on libglfixed:"; cat "$out/glfixed.log"; exit 1; }
 grep -q "renderer llvmpipe" "$out/mesa.log" || { echo "the Mesa run is not llvmpipe"; cat "$out/mesa.log"; exit 1; }
 grep -q "renderer libglfixed" "$out/glfixed.log" || { echo "the drop-in run is not libglfixed"; cat "$out/glfixed.log"; exit 1; }

@@ -16,7 +16,7 @@ for n in 71 72 73 74 75; do
   kill -0 $xvfb 2> /dev/null || continue
   env -u LD_LIBRARY_PATH DISPLAY=:$n "$probe" "$out/mesa.rgba" > "$out/mesa.log" 2>&1
   mesa=$?
-  env DISPLAY=:$n LD_LIBRARY_PATH="$dropin" "$probe" "$out/glfixed.rgba" > "$out/glfixed.log" 2>&1
+  env DISPLAY=:$n LD_PRELOAD="${GLFX_DROPIN_PRELOAD:-}" LD_LIBRARY_PATH="$dropin" "$probe" "$out/glfixed.rgba" > "$out/glfixed.log" 2>&1
   glfixed=$?
   kill $xvfb
   wait $xvfb 2> /dev/null

@@ -51,11 +51,15 @@ static void drawScene(int smooth) {
   glEnable(GL_LIGHT0);
   const GLfloat lightPos[] = {0.3f, 0.5f, 1.0f, 0.0f};
   const GLfloat diffuse[] = {0.9f, 0.6f, 0.3f, 1.0f};
-  glLightfv(GL_LIGHT0, GL_POSITION, lightPos);
-  glMaterialfv(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE, diffuse);
+  /* Every frame the same: the matrices start again, and the light is placed
+     under an identity modelview. */
   glMatrixMode(GL_PROJECTION);
+  glLoadIdentity();
   glFrustum(-1, 1, -0.75, 0.75, 1, 10);
   glMatrixMode(GL_MODELVIEW);
+  glLoadIdentity();
+  glLightfv(GL_LIGHT0, GL_POSITION, lightPos);
+  glMaterialfv(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE, diffuse);
   glTranslatef(0, 0, -3);
   glRotatef(30, 1, 0.5f, 0);
   glBegin(GL_TRIANGLES);

@@ -1,7 +1,8 @@
 #!/bin/sh
 # Runs the EGL window probe under an Xvfb of its own (the first free display
 # of :71-:75) on Mesa and on libglfixed, and compares the two windows, read
-# back with XGetImage, within the fidelity bar. Exit 77 (skipped) without Xvfb.
+# back with XGetImage, within the fidelity bar; the drop-in run draws 400
+# frames first and must not grow in memory. Exit 77 (skipped) without Xvfb.
 # Usage: egl_window_compare.sh <window-probe> <compare-probe> <dropin-dir> <out-dir>
 set -u
 probe=$1 compare=$2 dropin=$3 out=$4
@@ -16,7 +17,8 @@ for n in 71 72 73 74 75; do
   kill -0 $xvfb 2> /dev/null || continue
   env -u LD_LIBRARY_PATH DISPLAY=:$n "$probe" "$out/mesa.rgba" > "$out/mesa.log" 2>&1
   mesa=$?
-  env DISPLAY=:$n LD_PRELOAD="${GLFX_DROPIN_PRELOAD:-}" LD_LIBRARY_PATH="$dropin" "$probe" "$out/glfixed.rgba" > "$out/glfixed.log" 2>&1
+  env DISPLAY=:$n LD_PRELOAD="${GLFX_DROPIN_PRELOAD:-}" LD_LIBRARY_PATH="$dropin" "$probe" "$out/glfixed.rgba" \
+    smooth 400 > "$out/glfixed.log" 2>&1
   glfixed=$?
   kill $xvfb
   wait $xvfb 2> /dev/null
@@ -25,6 +27,9 @@ for n in 71 72 73 74 75; do
   [ $mesa -eq 0 ] && [ $glfixed -eq 0 ] || exit 1
   grep -q "renderer llvmpipe" "$out/mesa.log" || { echo "the Mesa run is not llvmpipe"; exit 1; }
   grep -q "vendor libglfixed" "$out/glfixed.log" || { echo "the drop-in run is not libglfixed"; exit 1; }
+  # 400 frames on the drop-in first: its memory must not grow with them.
+  growth=$(sed -n 's/^rss growth \(-*[0-9]*\) KiB.*/\1/p' "$out/glfixed.log")
+  [ -n "$growth" ] && [ "$growth" -le 512 ] || { echo "resident memory grew by ${growth:-?} KiB"; exit 1; }
   exec "$compare" --compare "$out/mesa.rgba" "$out/glfixed.rgba"
 done
 echo "no Xvfb could start on :71-:75"

@@ -4,16 +4,27 @@
    (egl_probe_scene.h), eglSwapBuffers, then the window read back with
    XGetImage. Built against the system's libEGL and libGL; run once on Mesa
    and once on the drop-in under the same Xvfb (egl_window_compare.sh).
-   Usage: egl_window_probe <out.rgba> [flat] */
+   Usage: egl_window_probe <out.rgba> [flat|smooth] [frames]: with a frame
+   count it draws and swaps that many frames first and prints its resident
+   memory after a tenth of them and at the end ("rss growth"). */
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
 #include <GL/gl.h>
 #include <X11/Xlib.h>
 #include <X11/Xutil.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "egl_probe_scene.h"
+
+static long residentKiB(void) {
+  long pages = 0, resident = 0;
+  FILE* f = fopen("/proc/self/statm", "r");
+  if (f && fscanf(f, "%ld %ld", &pages, &resident) != 2) resident = 0;
+  if (f) fclose(f);
+  return resident * 4;
+}
 
 int main(int argc, char** argv) {
   if (argc < 2) return fprintf(stderr, "usage: egl_window_probe out.rgba [flat]\n"), 2;
@@ -53,6 +64,15 @@ int main(int argc, char** argv) {
   EGLContext ctx = eglCreateContext(dpy, config, EGL_NO_CONTEXT, NULL);
   if (!surface || !ctx || !eglMakeCurrent(dpy, surface, surface, ctx))
     return fprintf(stderr, "no window context\n"), 1;
+  const int frames = argc > 3 ? atoi(argv[3]) : 0;
+  long rssEarly = 0;
+  for (int i = 0; i < frames; ++i) {
+    drawScene(smooth);
+    if (!eglSwapBuffers(dpy, surface)) return fprintf(stderr, "eglSwapBuffers failed\n"), 1;
+    if (i == frames / 10) rssEarly = residentKiB();
+  }
+  if (frames > 0)
+    printf("rss growth %ld KiB over %d frames\n", residentKiB() - rssEarly, frames - frames / 10);
   drawScene(smooth);
   if (!eglSwapBuffers(dpy, surface)) return fprintf(stderr, "eglSwapBuffers failed\n"), 1;
   eglWaitClient();

@@ -645,6 +645,23 @@ TEST(EglX11, WindowSurfaceSwapsToTheWindow) {
   EXPECT_EQ(XGetPixel(image, 8, 8) & 0xffffff, 0xff0000u);
   XDestroyImage(image);
 
+  // A window destroyed under its surface: the swap goes on, as on Mesa, and
+  // no X error reaches the program's handler (whose default would exit).
+  const Window doomed = XCreateSimpleWindow(x, DefaultRootWindow(x), 0, 0, 16, 16, 0, 0, 0);
+  XMapWindow(x, doomed);
+  XSync(x, False);
+  EGLSurface gone = eglCreateWindowSurface(dpy, config, doomed, nullptr);
+  ASSERT_NE(gone, EGL_NO_SURFACE);
+  ASSERT_TRUE(eglMakeCurrent(dpy, gone, gone, ctx));
+  XDestroyWindow(x, doomed);
+  XSync(x, False);
+  glClear(GL_COLOR_BUFFER_BIT);
+  EXPECT_TRUE(eglSwapBuffers(dpy, gone));
+  glViewport(0, 0, 8, 8);
+  EXPECT_TRUE(eglSwapBuffers(dpy, gone));
+  XSync(x, False);
+  EXPECT_TRUE(eglDestroySurface(dpy, gone));
+
   ASSERT_TRUE(eglMakeCurrent(dpy, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT));
   EXPECT_TRUE(eglDestroySurface(dpy, pix));
   EXPECT_TRUE(eglDestroySurface(dpy, surface));

@@ -8,6 +8,9 @@ packages=(
   libx11-dev libxext-dev            # GLX and EGL windows: Xlib and MIT-SHM
   libosmesa6-dev libglu1-mesa-dev libgl-dev  # Mesa's OSMesa and GL headers: the reference
   khronos-api                       # gl.xml, for tools/gen_gl_header.py
+  # EGL: the EGL headers and Mesa's EGL (the reference of tests/platform/egl*),
+  # Debian's eglinfo, and Xvfb for the window tests.
+  libegl-dev mesa-utils xvfb
 )
 sudo=""
 [ "$(id -u)" -eq 0 ] || sudo="sudo"

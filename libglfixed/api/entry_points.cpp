@@ -5,6 +5,10 @@
 // GLX (platform/glx*.cpp): the declarations of the GLX block below.
 #define GLX_GLXEXT_PROTOTYPES
 #include <GL/glx.h>
+// EGL (platform/egl*.cpp): eglGetProcAddress answers EGL names too.
+#define EGL_EGLEXT_PROTOTYPES
+#include <EGL/egl.h>
+#include <EGL/eglext.h>
 
 #include <cstdio>
 #include <cstring>
@@ -51,6 +55,15 @@ void unimplemented<void>(const char* name) {
 #include "api/gl_commands.inc"
 #pragma GCC diagnostic pop
 #undef GLFX_COMMAND
+
+// EGL programs: Debian's xscreensaver GL hacks, linked BIND_NOW, import
+// glGenerateMipmap (GL 3.0) and do not start without it. A stub like those
+// above: it records GL_INVALID_OPERATION and its name resolves to null.
+extern "C" void glfx_stub_glGenerateMipmap(GLenum target) {
+  glfixed::api::unimplemented<void>("glGenerateMipmap");
+}
+extern "C" GLAPI void APIENTRY glGenerateMipmap(GLenum target)
+    __attribute__((weak, alias("glfx_stub_glGenerateMipmap")));
 
 namespace glfixed::api {
 
@@ -110,6 +123,31 @@ const Entry kGlxEntries[] = {
     GLX_ENTRY(glXGetSwapIntervalMESA),   GLX_ENTRY(glXSwapIntervalSGI),
 };
 #undef GLX_ENTRY
+// EGL (platform/egl*.cpp): every EGL 1.5 entry point and the extension
+// names of the client and display extensions offered.
+#define EGL_ENTRY(name) {#name, reinterpret_cast<void*>(&name), nullptr}
+const Entry kEglEntries[] = {
+    EGL_ENTRY(eglBindAPI), EGL_ENTRY(eglBindTexImage), EGL_ENTRY(eglChooseConfig),
+    EGL_ENTRY(eglClientWaitSync), EGL_ENTRY(eglCopyBuffers), EGL_ENTRY(eglCreateContext),
+    EGL_ENTRY(eglCreateImage), EGL_ENTRY(eglCreatePbufferFromClientBuffer),
+    EGL_ENTRY(eglCreatePbufferSurface),
+    EGL_ENTRY(eglCreatePixmapSurface), EGL_ENTRY(eglCreatePlatformPixmapSurface),
+    EGL_ENTRY(eglCreatePlatformPixmapSurfaceEXT), EGL_ENTRY(eglCreatePlatformWindowSurface),
+    EGL_ENTRY(eglCreatePlatformWindowSurfaceEXT), EGL_ENTRY(eglCreateSync), EGL_ENTRY(eglCreateWindowSurface),
+    EGL_ENTRY(eglDestroyContext), EGL_ENTRY(eglDestroyImage), EGL_ENTRY(eglDestroySurface),
+    EGL_ENTRY(eglDestroySync), EGL_ENTRY(eglGetConfigAttrib), EGL_ENTRY(eglGetConfigs),
+    EGL_ENTRY(eglGetCurrentContext), EGL_ENTRY(eglGetCurrentDisplay), EGL_ENTRY(eglGetCurrentSurface),
+    EGL_ENTRY(eglGetDisplay), EGL_ENTRY(eglGetError), EGL_ENTRY(eglGetPlatformDisplay),
+    EGL_ENTRY(eglGetPlatformDisplayEXT), EGL_ENTRY(eglGetProcAddress), EGL_ENTRY(eglGetSyncAttrib),
+    EGL_ENTRY(eglInitialize), EGL_ENTRY(eglMakeCurrent), EGL_ENTRY(eglQueryAPI), EGL_ENTRY(eglQueryContext),
+    EGL_ENTRY(eglQueryString), EGL_ENTRY(eglQuerySurface), EGL_ENTRY(eglReleaseTexImage),
+    EGL_ENTRY(eglReleaseThread), EGL_ENTRY(eglSurfaceAttrib), EGL_ENTRY(eglSwapBuffers),
+    EGL_ENTRY(eglSwapInterval), EGL_ENTRY(eglTerminate), EGL_ENTRY(eglWaitClient), EGL_ENTRY(eglWaitGL),
+    EGL_ENTRY(eglWaitNative), EGL_ENTRY(eglWaitSync),
+    {"glGenerateMipmap", reinterpret_cast<void*>(&glGenerateMipmap),
+     reinterpret_cast<void*>(&glfx_stub_glGenerateMipmap)},
+};
+#undef EGL_ENTRY
 
 const Entry* find(const char* name) {
   if (!name) return nullptr;
@@ -117,7 +155,9 @@ const Entry* find(const char* name) {
     if (std::strcmp(e.name, name) == 0) return &e;
   for (const Entry& e : kOsmesaEntries)
     if (std::strcmp(e.name, name) == 0) return &e;
-  for (const Entry& e : kGlxEntries)
+  for (const Entry& e : kGlxEntries)  // GLX
+    if (std::strcmp(e.name, name) == 0) return &e;
+  for (const Entry& e : kEglEntries)  // EGL
     if (std::strcmp(e.name, name) == 0) return &e;
   return nullptr;
 }

@@ -34,10 +34,15 @@ class X11Presenter : public Presenter {
                                  front.width, front.height, 32, front.rowLength * 4);
     if (!image) return;
     image->byte_order = LSBFirst;  // the buffers' B, G, R, X bytes
-    XPutImage(display_, drawable_, gc_, image, 0, 0, 0, 0, front.width, front.height);
+    {
+      // A drawable destroyed under its surface is no error of the program's
+      // (Mesa's swap goes on): caught here, not left to its handler.
+      ErrorTrap trap(display_);
+      XPutImage(display_, drawable_, gc_, image, 0, 0, 0, 0, front.width, front.height);
+      trap.failed();
+    }
     image->data = nullptr;  // the surface's memory, not Xlib's to free
     XDestroyImage(image);
-    XFlush(display_);
   }
 
   bool windowSize(int* width, int* height) override {
@@ -59,8 +64,9 @@ class X11Presenter : public Presenter {
     for (int y = 0; y < front.height; ++y)
       std::memcpy(shmImage_->data + static_cast<size_t>(y) * shmImage_->bytes_per_line,
                   front.pixels + static_cast<size_t>(y) * front.rowLength * 4, static_cast<size_t>(front.width) * 4);
+    ErrorTrap trap(display_);  // as in present()
     XShmPutImage(display_, drawable_, gc_, shmImage_, 0, 0, 0, 0, front.width, front.height, False);
-    XSync(display_, False);
+    trap.failed();  // waits for the server
     return true;
   }
 

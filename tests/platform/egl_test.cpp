@@ -232,9 +232,13 @@ TEST(EglNoDisplay, Errors) {
   EXPECT_EQ(eglGetError(), EGL_BAD_CONFIG);
   EXPECT_EQ(eglCreateContext(dpy, config, reinterpret_cast<EGLContext>(0x99), nullptr), EGL_NO_CONTEXT);
   EXPECT_EQ(eglGetError(), EGL_BAD_CONTEXT);
-  // GL 2.1 compatibility, asked for by number: made.
-  const EGLint v21[] = {EGL_CONTEXT_MAJOR_VERSION, 2, EGL_CONTEXT_MINOR_VERSION, 1, EGL_NONE};
-  EGLContext ctx = eglCreateContext(dpy, config, EGL_NO_CONTEXT, v21);
+  // The library is GL 1.5 (no GLSL, api/gl_version.h): 2.0 is refused,
+  // 1.5 compatibility asked for by number is made.
+  const EGLint v20[] = {EGL_CONTEXT_MAJOR_VERSION, 2, EGL_CONTEXT_MINOR_VERSION, 0, EGL_NONE};
+  EXPECT_EQ(eglCreateContext(dpy, config, EGL_NO_CONTEXT, v20), EGL_NO_CONTEXT);
+  EXPECT_EQ(eglGetError(), EGL_BAD_MATCH);
+  const EGLint v15[] = {EGL_CONTEXT_MAJOR_VERSION, 1, EGL_CONTEXT_MINOR_VERSION, 5, EGL_NONE};
+  EGLContext ctx = eglCreateContext(dpy, config, EGL_NO_CONTEXT, v15);
   ASSERT_NE(ctx, EGL_NO_CONTEXT);
   // Bad handles in eglMakeCurrent, and surfaces without a context.
   EXPECT_FALSE(eglMakeCurrent(dpy, EGL_NO_SURFACE, EGL_NO_SURFACE, reinterpret_cast<EGLContext>(0x99)));

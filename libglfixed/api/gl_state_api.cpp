@@ -35,6 +35,15 @@ void setCapability(GLenum cap, bool enabled) {
   Context* ctx = api::contextForSetter();
   if (!ctx) return;
   const Capability* c = findCapability(cap);
+  if (!c) {
+    // EXT_vertex_array enables the arrays with glEnable; Mesa's compatibility
+    // contexts still do (as glEnableClientState: no flush, not in
+    // GL_ENABLE_BIT), and piglit's gl-1.1-color-material-array relies on it.
+    if (ClientArray* a = clientArrayOfCapability(ctx->vertexArray, cap)) {
+      a->enabled = enabled;
+      return;
+    }
+  }
   if (!c || !c->settable) {
     ctx->recordError(GL_INVALID_ENUM);
     return;

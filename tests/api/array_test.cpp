@@ -525,4 +525,30 @@ TEST(ArrayAliases, ExtensionNamesAreExported) {
   }
 }
 
+// EXT_vertex_array's way: glEnable and glDisable of an array's name set its
+// client state, as Mesa's compatibility contexts do (also from a display
+// list); glPopAttrib(GL_ENABLE_BIT) does not restore it.
+TEST_F(ArrayTest, EnableOfAnArrayIsItsClientState) {
+  const GLenum arrays[] = {GL_VERTEX_ARRAY, GL_NORMAL_ARRAY, GL_COLOR_ARRAY, GL_INDEX_ARRAY, GL_TEXTURE_COORD_ARRAY,
+                           GL_EDGE_FLAG_ARRAY};
+  for (GLenum a : arrays) {
+    glEnable(a);
+    EXPECT_NO_GL_ERROR();
+    EXPECT_EQ(glIsEnabled(a), GL_TRUE) << a;
+    glDisable(a);
+    EXPECT_EQ(glIsEnabled(a), GL_FALSE) << a;
+  }
+  glNewList(1, GL_COMPILE);
+  glEnable(GL_VERTEX_ARRAY);
+  glEndList();
+  EXPECT_EQ(glIsEnabled(GL_VERTEX_ARRAY), GL_FALSE);
+  glCallList(1);
+  EXPECT_EQ(glIsEnabled(GL_VERTEX_ARRAY), GL_TRUE);
+  glPushAttrib(GL_ENABLE_BIT);
+  glEnable(GL_NORMAL_ARRAY);
+  glPopAttrib();
+  EXPECT_EQ(glIsEnabled(GL_NORMAL_ARRAY), GL_TRUE);
+  EXPECT_NO_GL_ERROR();
+}
+
 }  // namespace

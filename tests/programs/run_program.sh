@@ -148,6 +148,14 @@ check_loader() {   # EXE LIB -> empty, or the reason it does not
         return 0
     fi
     resolved="$(LD_LIBRARY_PATH="$dropin" ldd "$exe" 2>/dev/null | awk -v l="$lib" '$1 == l { print $3 }')"
+    # libGL.so.1 and libEGL.so.1 are one file in the drop-in: the loader
+    # loads it once and ldd lists it under the first name it met.
+    if [ -z "$resolved" ]; then
+        local other
+        for other in $(LD_LIBRARY_PATH="$dropin" ldd "$exe" 2>/dev/null | awk '$2 == "=>" { print $3 }'); do
+            [ "$(readlink -f "$other")" = "$(readlink -f "$dropin/$lib")" ] && resolved=$other
+        done
+    fi
     if [ -z "$resolved" ] || [ "$(readlink -f "$resolved")" != "$(readlink -f "$dropin/$lib")" ]; then
         echo "the loader does not take $lib from $dropin (got: ${resolved:-nothing})"
     fi

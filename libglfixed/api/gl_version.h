@@ -19,7 +19,7 @@ constexpr const char* kGLRendererString = "libglfixed fixed-function software re
 constexpr const char* kGLExtensionsString =
     "GL_ARB_point_parameters GL_ARB_provoking_vertex GL_ARB_transpose_matrix GL_ARB_vertex_buffer_object "
     "GL_EXT_draw_range_elements GL_EXT_multi_draw_arrays GL_EXT_point_parameters GL_EXT_provoking_vertex "
-    "GL_EXT_rescale_normal GL_EXT_separate_specular_color GL_EXT_vertex_array";
+    "GL_EXT_rescale_normal GL_EXT_separate_specular_color GL_EXT_vertex_array ";  // a space after the last name, as Mesa's (piglit's glinfo prints it as it is)
 
 // True if a context of version major.minor can be had (the library's own
 // version or an earlier one): glXCreateContextAttribsARB, eglCreateContext.

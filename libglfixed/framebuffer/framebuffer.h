@@ -116,8 +116,9 @@ struct Framebuffer {
   // invalid operation), and an unknown name is kUnknown (an invalid enum).
   enum class Buffers { kUnknown, kMissing, kNone, kFront, kBack, kBoth };
   Buffers buffersNamed(GLenum buffer, bool forReading) const;
-  // Points `color` and `read` at the buffers GL state names. kBoth draws
-  // into the back buffer only for now (glClear clears both).
+  // Points `color` and `read` at the buffers GL state names; for kBoth
+  // `color` is the back buffer, and the draws and glClear do the front one
+  // too (pipeline/draw.cpp, api/gl_framebuffer_api.cpp).
   void selectBuffers(GLenum drawBuffer, GLenum readBuffer);
 };
 

@@ -139,7 +139,21 @@ void drawBatch(Context& ctx, const VertexBatch& batch, primitive::PrimitiveState
   if (ctx.renderMode.mode == GL_FEEDBACK)
     return primitive::feedbackPrimitives(ps, shaded, ctx.framebuffer.height(), ctx.current.texCoord[0],
                                          ctx.renderMode.feedback);
-  primitive::drawPrimitives(ps, shaded, ctx.framebuffer);
+  Framebuffer& fb = ctx.framebuffer;
+  if (fb.buffersNamed(ctx.colorBuffer.drawBuffer, false) != Framebuffer::Buffers::kBoth)
+    return primitive::drawPrimitives(ps, shaded, fb);
+  // GL_FRONT_AND_BACK (and GL_LEFT) on a double-buffered surface: the same
+  // primitives into the back buffer, then into the front one from the same
+  // depth values and stipple phase, so both get the same pixels (§4.2.1).
+  const DepthBuffer depthBefore = fb.depth;
+  const uint32_t stippleBefore = ctx.lineStipple.counter;
+  primitive::drawPrimitives(ps, shaded, fb);
+  fb.depth = depthBefore;
+  ctx.lineStipple.counter = stippleBefore;
+  const ColorBuffer back = fb.color;
+  fb.color = fb.front;
+  primitive::drawPrimitives(ps, shaded, fb);
+  fb.color = back;
 }
 
 bool anyVertexOutside(Context& ctx, const VertexBatch& batch) {

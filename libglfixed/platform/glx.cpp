@@ -40,7 +40,17 @@ std::atomic<unsigned long> gNextContextId{1};
 
 int closeDisplay(Display* display, XExtCodes*) {
   std::lock_guard<std::recursive_mutex> lock(glxMutex());
-  registry().erase(display);
+  auto it = registry().find(display);
+  if (it == registry().end()) return 0;
+  // Surfaces still bound to a context outlive the state: none may talk to
+  // the closing connection.
+  for (auto& [id, drawable] : it->second->drawables)
+    if (drawable->surface) drawable->surface->connectionClosing();
+  if (tCurrent && tCurrent->display == display) {
+    for (auto* d : {tCurrent->draw.get(), tCurrent->read.get()})
+      if (d && d->surface) d->surface->connectionClosing();
+  }
+  registry().erase(it);
   return 0;
 }
 

@@ -151,7 +151,10 @@ GLAPI GLXWindow APIENTRY glXCreateWindow(Display* dpy, GLXFBConfig config, Windo
   std::lock_guard<std::recursive_mutex> lock(glxMutex());
   DisplayState* ds = displayState(dpy);
   if (!ds || !isConfigOf(*ds, config) || !config->visualId) return None;
-  if (ds->drawables.count(win)) return None;  // BadAlloc: already a GLX drawable
+  // BadAlloc if a GLXWindow exists for it already; a window used directly
+  // before becomes the GLXWindow (a context still bound keeps its surface).
+  auto existing = ds->drawables.find(win);
+  if (existing != ds->drawables.end() && existing->second->kind != GlxDrawable::Kind::kWindow) return None;
   auto surface = isWindow(dpy, win) ? x11Surface(dpy, win, nullptr, config->config->doubleBuffered, *config) : nullptr;
   if (!surface) return None;
   auto d = std::make_shared<GlxDrawable>();

@@ -23,25 +23,43 @@ class X11Presenter : public Presenter {
     useShm_ = XShmQueryExtension(display_);
   }
   ~X11Presenter() override {
+    if (closing_) return;
     releaseShm();
     XFreeGC(display_, gc_);
   }
 
+  // Inside XCloseDisplay, libXext may have forgotten MIT-SHM already: an
+  // XShmDetach now would set it up again on a dying Display (and a later
+  // Display at the same address would find it). The server frees the
+  // segment and the GC with the connection; only our mapping goes.
+  void connectionClosing() override {
+    if (shmInfo_.shmaddr) shmdt(shmInfo_.shmaddr);
+    shmInfo_.shmaddr = nullptr;
+    closing_ = gone_ = true;
+  }
+
+  // Under the error trap: a window destroyed under the context (the
+  // program's, or at exit) must not reach the program's error handler.
+  // After one failure the drawable is taken as gone: nothing more is sent
+  // to it, and its size is no longer asked.
   void present(const ColorBuffer& front) override {
-    if (!front.pixels) return;
-    if (useShm_ && presentShm(front)) return;
-    XImage* image = XCreateImage(display_, visual_, depth_, ZPixmap, 0, reinterpret_cast<char*>(front.pixels),
-                                 front.width, front.height, 32, front.rowLength * 4);
-    if (!image) return;
-    image->byte_order = LSBFirst;  // the buffers' B, G, R, X bytes
-    XPutImage(display_, drawable_, gc_, image, 0, 0, 0, 0, front.width, front.height);
-    image->data = nullptr;  // the surface's memory, not Xlib's to free
-    XDestroyImage(image);
-    XFlush(display_);
+    if (!front.pixels || gone_) return;
+    ErrorTrap trap(display_);
+    if (!(useShm_ && presentShm(front))) {
+      XImage* image = XCreateImage(display_, visual_, depth_, ZPixmap, 0, reinterpret_cast<char*>(front.pixels),
+                                   front.width, front.height, 32, front.rowLength * 4);
+      if (!image) return;
+      image->byte_order = LSBFirst;  // the buffers' B, G, R, X bytes
+      XPutImage(display_, drawable_, gc_, image, 0, 0, 0, 0, front.width, front.height);
+      image->data = nullptr;  // the surface's memory, not Xlib's to free
+      XDestroyImage(image);
+    }
+    if (trap.failed()) gone_ = true;
   }
 
   bool windowSize(int* width, int* height) override {
     int depth = 0;
+    if (gone_) return false;
     return x11DrawableSize(display_, drawable_, width, height, &depth);
   }
 
@@ -108,6 +126,8 @@ class X11Presenter : public Presenter {
   XImage* shmImage_ = nullptr;
   XShmSegmentInfo shmInfo_{};
   bool attached_ = false;
+  bool gone_ = false;  // the drawable was destroyed
+  bool closing_ = false;  // the connection is closing
 };
 
 }  // namespace

@@ -532,4 +532,58 @@ TEST_F(GlxTest, SwapIntervalSpacesSwaps) {
   glXDestroyContext(dpy_, ctx);
 }
 
+TEST_F(GlxTest, GlxWindowDrawsLikeItsWindow) {
+  const int attrs[] = {GLX_DOUBLEBUFFER, True, None};
+  int n = 0;
+  GLXFBConfig* configs = glXChooseFBConfig(dpy_, 0, attrs, &n);
+  ASSERT_GT(n, 0);
+  XVisualInfo* vis = glXGetVisualFromFBConfig(dpy_, configs[0]);
+  ASSERT_NE(vis, nullptr);
+  const Window win = makeWindow(vis, 20, 20);
+  XFree(vis);
+  GLXWindow glxWin = glXCreateWindow(dpy_, configs[0], win, nullptr);
+  ASSERT_NE(glxWin, static_cast<GLXWindow>(None));
+  EXPECT_EQ(glXCreateWindow(dpy_, configs[0], win, nullptr), static_cast<GLXWindow>(None));  // one per window
+  GLXContext ctx = glXCreateNewContext(dpy_, configs[0], GLX_RGBA_TYPE, nullptr, True);
+  XFree(configs);
+  ASSERT_TRUE(glXMakeContextCurrent(dpy_, glxWin, glxWin, ctx));
+  glClearColor(1, 0, 1, 1);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glXSwapBuffers(dpy_, glxWin);
+  EXPECT_EQ(pixelAt(win, 19, 19), 0xff00ffu);
+  // Destroyed while current: drawn into and swapped until released.
+  glXDestroyWindow(dpy_, glxWin);
+  glClearColor(0, 1, 0, 1);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glXSwapBuffers(dpy_, glxWin);
+  EXPECT_EQ(pixelAt(win, 0, 0), 0x00ff00u);
+  ASSERT_TRUE(glXMakeContextCurrent(dpy_, None, None, nullptr));
+  glXDestroyContext(dpy_, ctx);
+}
+
+TEST_F(GlxTest, AWindowDestroyedUnderTheContextFailsQuietly) {
+  XVisualInfo* vis = chooseVisual({GLX_RGBA, GLX_DOUBLEBUFFER});
+  ASSERT_NE(vis, nullptr);
+  const Window win = makeWindow(vis, 20, 20);
+  GLXContext ctx = glXCreateContext(dpy_, vis, nullptr, True);
+  XFree(vis);
+  ASSERT_TRUE(glXMakeCurrent(dpy_, win, ctx));
+  glClear(GL_COLOR_BUFFER_BIT);
+  glXSwapBuffers(dpy_, win);
+  XDestroyWindow(dpy_, win);
+  XSync(dpy_, False);
+  for (int i = 0; i < 3; ++i) {
+    glClear(GL_COLOR_BUFFER_BIT);
+    glViewport(0, 0, 20, 20);
+    glXSwapBuffers(dpy_, win);
+  }
+  glDrawBuffer(GL_FRONT);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glFlush();
+  glXWaitGL();
+  EXPECT_EQ(gXErrors, 0);
+  ASSERT_TRUE(glXMakeCurrent(dpy_, None, nullptr));
+  glXDestroyContext(dpy_, ctx);
+}
+
 }  // namespace

@@ -31,10 +31,17 @@ class X11Presenter : public Presenter {
   // Inside XCloseDisplay, libXext may have forgotten MIT-SHM already: an
   // XShmDetach now would set it up again on a dying Display (and a later
   // Display at the same address would find it). The server frees the
-  // segment and the GC with the connection; only our mapping goes.
+  // segment with the connection; core requests (XFreeGC) are still fine.
   void connectionClosing() override {
+    if (closing_) return;
     if (shmInfo_.shmaddr) shmdt(shmInfo_.shmaddr);
     shmInfo_.shmaddr = nullptr;
+    if (shmImage_) {
+      shmImage_->data = nullptr;
+      XDestroyImage(shmImage_);  // client memory only
+      shmImage_ = nullptr;
+    }
+    XFreeGC(display_, gc_);
     closing_ = gone_ = true;
   }
 

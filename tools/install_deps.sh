@@ -8,6 +8,8 @@ packages=(
   libx11-dev libxext-dev            # GLX and EGL windows: Xlib and MIT-SHM
   libosmesa6-dev libglu1-mesa-dev libgl-dev  # Mesa's OSMesa and GL headers: the reference
   khronos-api                       # gl.xml, for tools/gen_gl_header.py
+  # GLX (tests/platform/glx_test.cpp): an X server to draw on, and its 'fixed' font
+  xvfb xfonts-base
 )
 sudo=""
 [ "$(id -u)" -eq 0 ] || sudo="sudo"

@@ -21,7 +21,8 @@ std::shared_ptr<Surface> x11Surface(Display* display, Drawable drawable, Visual*
   if (!x11DrawableSize(display, drawable, &width, &height, &depth)) return nullptr;
   std::unique_ptr<Presenter> presenter = makeX11Presenter(display, drawable, visual);
   if (!presenter) return nullptr;
-  return std::make_shared<Surface>(width, height, doubleBuffered, config.config->alphaBits, std::move(presenter));
+  return std::make_shared<Surface>(width, height, doubleBuffered, config.config->alphaBits,
+                                   std::move(presenter));
 }
 
 bool isWindow(Display* display, Window window) {
@@ -147,7 +148,8 @@ GLAPI void APIENTRY glXSwapBuffers(Display* dpy, GLXDrawable drawable) {
   d->surface->swapBuffers();
 }
 
-GLAPI GLXWindow APIENTRY glXCreateWindow(Display* dpy, GLXFBConfig config, Window win, const int* attribList) {
+GLAPI GLXWindow APIENTRY glXCreateWindow(Display* dpy, GLXFBConfig config, Window win,
+                                         const int* attribList) {
   std::lock_guard<std::recursive_mutex> lock(glxMutex());
   DisplayState* ds = displayState(dpy);
   if (!ds || !isConfigOf(*ds, config) || !config->visualId) return None;
@@ -155,7 +157,8 @@ GLAPI GLXWindow APIENTRY glXCreateWindow(Display* dpy, GLXFBConfig config, Windo
   // before becomes the GLXWindow (a context still bound keeps its surface).
   auto existing = ds->drawables.find(win);
   if (existing != ds->drawables.end() && existing->second->kind != GlxDrawable::Kind::kWindow) return None;
-  auto surface = isWindow(dpy, win) ? x11Surface(dpy, win, nullptr, config->config->doubleBuffered, *config) : nullptr;
+  auto surface =
+      isWindow(dpy, win) ? x11Surface(dpy, win, nullptr, config->config->doubleBuffered, *config) : nullptr;
   if (!surface) return None;
   auto d = std::make_shared<GlxDrawable>();
   d->kind = GlxDrawable::Kind::kGlxWindow;
@@ -183,7 +186,8 @@ GLAPI void APIENTRY glXDestroyGLXPixmap(Display* dpy, GLXPixmap pixmap) {
   destroy(dpy, pixmap, GlxDrawable::Kind::kGlxPixmap);
 }
 
-GLAPI GLXPixmap APIENTRY glXCreatePixmap(Display* dpy, GLXFBConfig config, Pixmap pixmap, const int* attribList) {
+GLAPI GLXPixmap APIENTRY glXCreatePixmap(Display* dpy, GLXFBConfig config, Pixmap pixmap,
+                                         const int* attribList) {
   {
     std::lock_guard<std::recursive_mutex> lock(glxMutex());
     DisplayState* ds = displayState(dpy);

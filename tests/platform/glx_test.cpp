@@ -3,9 +3,8 @@
 // Skipped where no Xvfb binary exists. The comparison of whole programs with
 // Mesa is tests/programs/'s; these check behaviour that can fail here.
 // gtest first: X11 headers define None, Bool, Status as macros.
-#include <gtest/gtest.h>
-
 #include <GL/gl.h>
+#include <gtest/gtest.h>
 #define GLX_GLXEXT_PROTOTYPES
 #include <GL/glx.h>
 #include <X11/Xutil.h>
@@ -139,7 +138,7 @@ TEST_F(GlxTest, ChooseVisualFollowsTheAttributes) {
   EXPECT_EQ(config(vis, GLX_RGBA), True);
   EXPECT_EQ(config(vis, GLX_DOUBLEBUFFER), True);
   EXPECT_EQ(config(vis, GLX_RED_SIZE), 8);
-  EXPECT_EQ(config(vis, GLX_DEPTH_SIZE), 24);  // the largest depth of at least 1
+  EXPECT_EQ(config(vis, GLX_DEPTH_SIZE), 24);   // the largest depth of at least 1
   EXPECT_EQ(config(vis, GLX_STENCIL_SIZE), 0);  // the smallest stencil
   EXPECT_EQ(config(vis, GLX_ALPHA_SIZE), 0);
   EXPECT_EQ(config(vis, GLX_X_VISUAL_TYPE), GLX_TRUE_COLOR);
@@ -195,8 +194,17 @@ TEST_F(GlxTest, ChooseFBConfigSortsAndFilters) {
   for (int i = 0; i < n; ++i) EXPECT_TRUE(attrib(configs[i], GLX_DRAWABLE_TYPE) & GLX_WINDOW_BIT);
   XFree(configs);
 
-  const int wanted[] = {GLX_DOUBLEBUFFER, True, GLX_DEPTH_SIZE, 16, GLX_STENCIL_SIZE, 8, GLX_RENDER_TYPE,
-                        GLX_RGBA_BIT, GLX_X_RENDERABLE, True, None};
+  const int wanted[] = {GLX_DOUBLEBUFFER,
+                        True,
+                        GLX_DEPTH_SIZE,
+                        16,
+                        GLX_STENCIL_SIZE,
+                        8,
+                        GLX_RENDER_TYPE,
+                        GLX_RGBA_BIT,
+                        GLX_X_RENDERABLE,
+                        True,
+                        None};
   configs = glXChooseFBConfig(dpy_, 0, wanted, &n);
   ASSERT_NE(configs, nullptr);
   for (int i = 0; i < n; ++i) {
@@ -407,8 +415,8 @@ TEST_F(GlxTest, ContextsShareDisplayListsAndFailQuietly) {
   EXPECT_FLOAT_EQ(clear[1], 0.25f);
 
   // Failures return False and raise no X error in the program.
-  EXPECT_FALSE(glXMakeCurrent(dpy_, 0x7ffffff, a));       // not a drawable
-  EXPECT_FALSE(glXMakeCurrent(dpy_, win, nullptr));       // BadMatch
+  EXPECT_FALSE(glXMakeCurrent(dpy_, 0x7ffffff, a));  // not a drawable
+  EXPECT_FALSE(glXMakeCurrent(dpy_, win, nullptr));  // BadMatch
   EXPECT_EQ(glXGetCurrentContext(), b);
   int id = 0;
   EXPECT_EQ(glXQueryContext(dpy_, b, GLX_SCREEN, &id), Success);
@@ -437,8 +445,9 @@ TEST_F(GlxTest, CreateContextAttribsGivesAtMostTheLibrarysVersion) {
   const int v21[] = {GLX_CONTEXT_MAJOR_VERSION_ARB, 2, GLX_CONTEXT_MINOR_VERSION_ARB, 1, None};
   GLXContext ctx = create(dpy_, configs[0], nullptr, True, v21);
   EXPECT_NE(ctx, nullptr);
-  const int v32core[] = {GLX_CONTEXT_MAJOR_VERSION_ARB, 3, GLX_CONTEXT_MINOR_VERSION_ARB, 2,
-                         GLX_CONTEXT_PROFILE_MASK_ARB, GLX_CONTEXT_CORE_PROFILE_BIT_ARB, None};
+  const int v32core[] = {
+      GLX_CONTEXT_MAJOR_VERSION_ARB,    3,   GLX_CONTEXT_MINOR_VERSION_ARB, 2, GLX_CONTEXT_PROFILE_MASK_ARB,
+      GLX_CONTEXT_CORE_PROFILE_BIT_ARB, None};
   EXPECT_EQ(create(dpy_, configs[0], nullptr, True, v32core), nullptr);
   const int v30[] = {GLX_CONTEXT_MAJOR_VERSION_ARB, 3, None};
   EXPECT_EQ(create(dpy_, configs[0], nullptr, True, v30), nullptr);
@@ -455,7 +464,8 @@ TEST_F(GlxTest, CreateContextAttribsGivesAtMostTheLibrarysVersion) {
 TEST_F(GlxTest, ProcAddressesAndStrings) {
   auto proc = [](const char* name) { return glXGetProcAddress(reinterpret_cast<const GLubyte*>(name)); };
   EXPECT_EQ(proc("glXSwapBuffers"), reinterpret_cast<__GLXextFuncPtr>(&glXSwapBuffers));
-  EXPECT_EQ(proc("glXCreateContextAttribsARB"), reinterpret_cast<__GLXextFuncPtr>(&glXCreateContextAttribsARB));
+  EXPECT_EQ(proc("glXCreateContextAttribsARB"),
+            reinterpret_cast<__GLXextFuncPtr>(&glXCreateContextAttribsARB));
   EXPECT_EQ(proc("glClear"), reinterpret_cast<__GLXextFuncPtr>(&glClear));
   EXPECT_EQ(proc("glXNoSuchFunction"), nullptr);
   EXPECT_EQ(proc("glNoSuchFunction"), nullptr);
@@ -524,7 +534,8 @@ TEST_F(GlxTest, SwapIntervalSpacesSwaps) {
   glXSwapBuffers(dpy_, win);
   const auto start = std::chrono::steady_clock::now();
   for (int i = 0; i < 4; ++i) glXSwapBuffers(dpy_, win);
-  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  const double ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   EXPECT_GE(ms, 4 * 2 * 16.0);  // four swaps, two 60 Hz periods apart
   EXPECT_EQ(glXSwapIntervalMESA(0), 0);
   EXPECT_EQ(glXGetSwapIntervalMESA(), 0);

@@ -99,6 +99,22 @@ std::shared_ptr<GlxDrawable> currentDrawable() {
   return c ? c->draw : nullptr;
 }
 
+// X tells no one when a window is destroyed: the surfaces of windows used
+// directly (not GLXWindows, which glXDestroyWindow ends) that no context
+// holds any more are dropped once their window is gone, each time a new
+// window appears, so that a program making many windows does not keep the
+// buffers of all of them.
+void forgetDestroyedWindows(DisplayState& ds) {
+  for (auto it = ds.drawables.begin(); it != ds.drawables.end();) {
+    int width, height, depth;
+    if (it->second->kind == GlxDrawable::Kind::kWindow && it->second.use_count() == 1 &&
+        !x11DrawableSize(ds.display, it->second->x11, &width, &height, &depth))
+      it = ds.drawables.erase(it);
+    else
+      ++it;
+  }
+}
+
 }  // namespace
 
 std::shared_ptr<GlxDrawable> drawableFor(DisplayState& ds, GLXDrawable id, const FBConfig* config) {
@@ -110,6 +126,7 @@ std::shared_ptr<GlxDrawable> drawableFor(DisplayState& ds, GLXDrawable id, const
     return it->second;
   }
   if (!config || !isWindow(ds.display, id)) return nullptr;
+  forgetDestroyedWindows(ds);
   auto surface = x11Surface(ds.display, id, nullptr, config->config->doubleBuffered, *config);
   if (!surface) return nullptr;
   auto d = std::make_shared<GlxDrawable>();

@@ -16,6 +16,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <string>
@@ -595,6 +596,39 @@ TEST_F(GlxTest, AWindowDestroyedUnderTheContextFailsQuietly) {
   EXPECT_EQ(gXErrors, 0);
   ASSERT_TRUE(glXMakeCurrent(dpy_, None, nullptr));
   glXDestroyContext(dpy_, ctx);
+}
+
+long residentKilobytes() {
+  FILE* f = std::fopen("/proc/self/status", "r");
+  if (!f) return -1;
+  char line[256];
+  long kb = -1;
+  while (std::fgets(line, sizeof line, f))
+    if (std::strncmp(line, "VmRSS:", 6) == 0) kb = std::atol(line + 6);
+  std::fclose(f);
+  return kb;
+}
+
+TEST_F(GlxTest, TheBuffersOfDestroyedWindowsAreLetGo) {
+  XVisualInfo* vis = chooseVisual({GLX_RGBA, GLX_DOUBLEBUFFER});
+  ASSERT_NE(vis, nullptr);
+  GLXContext ctx = glXCreateContext(dpy_, vis, nullptr, True);
+  long before = 0;
+  // 80 windows of 512x512, double-buffered: 160 MB if every surface stayed.
+  for (int i = 0; i < 80; ++i) {
+    const Window win = makeWindow(vis, 512, 512);
+    ASSERT_TRUE(glXMakeCurrent(dpy_, win, ctx));
+    glClear(GL_COLOR_BUFFER_BIT);
+    glXSwapBuffers(dpy_, win);
+    ASSERT_TRUE(glXMakeCurrent(dpy_, None, nullptr));
+    XDestroyWindow(dpy_, win);
+    if (i == 4) before = residentKilobytes();
+  }
+  const long after = residentKilobytes();
+  ASSERT_GT(before, 0);
+  EXPECT_LT(after - before, 32 * 1024) << before << " kB, then " << after << " kB";
+  glXDestroyContext(dpy_, ctx);
+  XFree(vis);
 }
 
 }  // namespace

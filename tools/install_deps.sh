@@ -14,6 +14,7 @@ packages=(
   # piglit (issue 13): piglit's test programs, run under a private X server by
   # tests/piglit/run_piglit.sh; xauth is for xvfb-run.
   piglit
+  xfonts-base                       # GLX: the X server's 'fixed' font (glXUseXFont tests)
 )
 sudo=""
 [ "$(id -u)" -eq 0 ] || sudo="sudo"

@@ -27,7 +27,8 @@ namespace {
 // is offered).
 constexpr const char* kExtensions =
     "GLX_ARB_create_context GLX_ARB_create_context_profile GLX_ARB_get_proc_address "
-    "GLX_EXT_swap_control GLX_EXT_visual_info GLX_EXT_visual_rating GLX_MESA_swap_control GLX_SGI_swap_control";
+    "GLX_EXT_swap_control GLX_EXT_visual_info GLX_EXT_visual_rating GLX_MESA_swap_control "
+    "GLX_SGI_swap_control";
 
 std::map<Display*, std::unique_ptr<DisplayState>>& registry() {
   static auto* r = new std::map<Display*, std::unique_ptr<DisplayState>>();
@@ -40,7 +41,17 @@ std::atomic<unsigned long> gNextContextId{1};
 
 int closeDisplay(Display* display, XExtCodes*) {
   std::lock_guard<std::recursive_mutex> lock(glxMutex());
-  registry().erase(display);
+  auto it = registry().find(display);
+  if (it == registry().end()) return 0;
+  // Surfaces still bound to a context outlive the state: none may talk to
+  // the closing connection.
+  for (auto& [id, drawable] : it->second->drawables)
+    if (drawable->surface) drawable->surface->connectionClosing();
+  if (tCurrent && tCurrent->display == display) {
+    for (auto* d : {tCurrent->draw.get(), tCurrent->read.get()})
+      if (d && d->surface) d->surface->connectionClosing();
+  }
+  registry().erase(it);
   return 0;
 }
 
@@ -123,7 +134,7 @@ bool makeContextCurrent(Display* dpy, GLXDrawable draw, GLXDrawable read, GLXCon
   }
   if (!ctx) {
     if (draw != None || read != None) return false;  // BadMatch
-    if (previous) {  // another API's current context is not GLX's to release
+    if (previous) {                                  // another API's current context is not GLX's to release
       makeCurrent(nullptr, nullptr, nullptr);
       released(previous);
     }
@@ -131,9 +142,9 @@ bool makeContextCurrent(Display* dpy, GLXDrawable draw, GLXDrawable read, GLXCon
     tCurrentDisplay = nullptr;
     return true;
   }
-  if (ctx->destroyed) return false;                         // GLXBadContext
-  if (ctx->current && ctx != previous) return false;        // BadAccess: current on another thread
-  if (draw == None || read == None) return false;           // BadMatch (no surfaceless GLX)
+  if (ctx->destroyed) return false;                   // GLXBadContext
+  if (ctx->current && ctx != previous) return false;  // BadAccess: current on another thread
+  if (draw == None || read == None) return false;     // BadMatch (no surfaceless GLX)
   DisplayState* ds = displayState(dpy);
   if (!ds || ctx->display != dpy) return false;
   std::shared_ptr<GlxDrawable> d = drawableFor(*ds, draw, ctx->config);
@@ -198,7 +209,8 @@ GLAPI const char* APIENTRY glXQueryExtensionsString(Display* dpy, int screen) {
   return kExtensions;
 }
 
-GLAPI GLXContext APIENTRY glXCreateContext(Display* dpy, XVisualInfo* vis, GLXContext shareList, Bool direct) {
+GLAPI GLXContext APIENTRY glXCreateContext(Display* dpy, XVisualInfo* vis, GLXContext shareList,
+                                           Bool direct) {
   std::lock_guard<std::recursive_mutex> lock(glxMutex());
   DisplayState* ds = displayState(dpy);
   if (!ds) return nullptr;
@@ -217,8 +229,9 @@ GLAPI GLXContext APIENTRY glXCreateNewContext(Display* dpy, GLXFBConfig config, 
 // version or an earlier one. A higher version, a forward-compatible or ES
 // context, or an unknown attribute gives NULL (Mesa raises BadMatch or
 // GLXBadProfileARB there; NULL lets the program take its fallback).
-GLAPI GLXContext APIENTRY glXCreateContextAttribsARB(Display* dpy, GLXFBConfig config, GLXContext shareContext,
-                                                     Bool direct, const int* attribList) {
+GLAPI GLXContext APIENTRY glXCreateContextAttribsARB(Display* dpy, GLXFBConfig config,
+                                                     GLXContext shareContext, Bool direct,
+                                                     const int* attribList) {
   int major = 1, minor = 0, flags = 0, profile = GLX_CONTEXT_COMPATIBILITY_PROFILE_BIT_ARB;
   int renderType = GLX_RGBA_TYPE;
   for (int i = 0; attribList && attribList[i] != None; i += 2) {
@@ -326,9 +339,12 @@ GLAPI void APIENTRY glXWaitX(void) {
 }
 
 GLAPI __GLXextFuncPtr APIENTRY glXGetProcAddressARB(const GLubyte* procName) {
-  return reinterpret_cast<__GLXextFuncPtr>(glfixed::api::procAddress(reinterpret_cast<const char*>(procName)));
+  return reinterpret_cast<__GLXextFuncPtr>(
+      glfixed::api::procAddress(reinterpret_cast<const char*>(procName)));
 }
 
-GLAPI __GLXextFuncPtr APIENTRY glXGetProcAddress(const GLubyte* procName) { return glXGetProcAddressARB(procName); }
+GLAPI __GLXextFuncPtr APIENTRY glXGetProcAddress(const GLubyte* procName) {
+  return glXGetProcAddressARB(procName);
+}
 
 }  // extern "C"

@@ -53,7 +53,8 @@ std::vector<VisualID> visualsOf(Display* display, int screen, int depth) {
   tmpl.depth = depth;
   tmpl.c_class = TrueColor;
   int n = 0;
-  XVisualInfo* list = XGetVisualInfo(display, VisualScreenMask | VisualDepthMask | VisualClassMask, &tmpl, &n);
+  XVisualInfo* list =
+      XGetVisualInfo(display, VisualScreenMask | VisualDepthMask | VisualClassMask, &tmpl, &n);
   std::vector<VisualID> ids;
   const VisualID defaultId = XVisualIDFromVisual(DefaultVisual(display, screen));
   for (int i = 0; i < n; ++i)
@@ -137,21 +138,28 @@ int configAttrib(const FBConfig& fb, int attribute, int* value) {
     case GLX_DOUBLEBUFFER: v = c.doubleBuffered; break;
     case GLX_STEREO: v = False; break;
     case GLX_AUX_BUFFERS: v = 0; break;
-    case GLX_RED_SIZE: case GLX_GREEN_SIZE: case GLX_BLUE_SIZE: v = 8; break;
+    case GLX_RED_SIZE:
+    case GLX_GREEN_SIZE:
+    case GLX_BLUE_SIZE: v = 8; break;
     case GLX_ALPHA_SIZE: v = c.alphaBits; break;
     case GLX_DEPTH_SIZE: v = c.depthBits; break;
     case GLX_STENCIL_SIZE: v = c.stencilBits; break;
-    case GLX_ACCUM_RED_SIZE: case GLX_ACCUM_GREEN_SIZE: case GLX_ACCUM_BLUE_SIZE: case GLX_ACCUM_ALPHA_SIZE:
+    case GLX_ACCUM_RED_SIZE:
+    case GLX_ACCUM_GREEN_SIZE:
+    case GLX_ACCUM_BLUE_SIZE:
+    case GLX_ACCUM_ALPHA_SIZE:
       v = 0;  // no accumulation buffer
       break;
-    case GLX_SAMPLE_BUFFERS: case GLX_SAMPLES: v = 0; break;
+    case GLX_SAMPLE_BUFFERS:
+    case GLX_SAMPLES: v = 0; break;
     case GLX_X_VISUAL_TYPE: v = hasVisual ? GLX_TRUE_COLOR : GLX_NONE; break;
     case GLX_CONFIG_CAVEAT: v = GLX_NONE; break;
     case GLX_TRANSPARENT_TYPE: v = GLX_NONE; break;
-    case GLX_TRANSPARENT_INDEX_VALUE: case GLX_TRANSPARENT_RED_VALUE: case GLX_TRANSPARENT_GREEN_VALUE:
-    case GLX_TRANSPARENT_BLUE_VALUE: case GLX_TRANSPARENT_ALPHA_VALUE:
-      v = 0;
-      break;
+    case GLX_TRANSPARENT_INDEX_VALUE:
+    case GLX_TRANSPARENT_RED_VALUE:
+    case GLX_TRANSPARENT_GREEN_VALUE:
+    case GLX_TRANSPARENT_BLUE_VALUE:
+    case GLX_TRANSPARENT_ALPHA_VALUE: v = 0; break;
     case GLX_VISUAL_ID: v = static_cast<int>(fb.visualId); break;
     case GLX_SCREEN: v = fb.screen; break;
     case GLX_DRAWABLE_TYPE:
@@ -163,7 +171,8 @@ int configAttrib(const FBConfig& fb, int attribute, int* value) {
     case GLX_RENDER_TYPE: v = GLX_RGBA_BIT; break;
     case GLX_X_RENDERABLE: v = hasVisual; break;
     case GLX_FBCONFIG_ID: v = c.id; break;
-    case GLX_MAX_PBUFFER_WIDTH: case GLX_MAX_PBUFFER_HEIGHT: v = kMaxViewportSize; break;
+    case GLX_MAX_PBUFFER_WIDTH:
+    case GLX_MAX_PBUFFER_HEIGHT: v = kMaxViewportSize; break;
     case GLX_MAX_PBUFFER_PIXELS: v = kMaxViewportSize * kMaxViewportSize; break;
     default: return GLX_BAD_ATTRIBUTE;
   }
@@ -221,8 +230,14 @@ void parseVisualList(const int* list, Request* r) {
   for (int i = 0; list && list[i] != None; ++i) {
     const int a = list[i];
     if (a == GLX_USE_GL || a == GLX_RGBA) continue;
-    if (a == GLX_DOUBLEBUFFER) { r->doubleBuffer = True; continue; }
-    if (a == GLX_STEREO) { r->stereo = True; continue; }
+    if (a == GLX_DOUBLEBUFFER) {
+      r->doubleBuffer = True;
+      continue;
+    }
+    if (a == GLX_STEREO) {
+      r->stereo = True;
+      continue;
+    }
     const int v = list[++i];
     if (v == None) break;
     if (int* f = field(*r, a)) *f = v;
@@ -261,12 +276,12 @@ bool matches(const FBConfig& fb, const Request& r) {
   };
   if (r.fbconfigId != kDontCare) return fb.config->id == r.fbconfigId;  // all else ignored
   return atLeast(get(GLX_BUFFER_SIZE), r.bufferSize) && exactly(0, r.level) &&
-         exactly(get(GLX_DOUBLEBUFFER), r.doubleBuffer) && exactly(False, r.stereo) && atLeast(0, r.auxBuffers) &&
-         atLeast(8, r.red) && atLeast(8, r.green) && atLeast(8, r.blue) && atLeast(fb.config->alphaBits, r.alpha) &&
-         atLeast(fb.config->depthBits, r.depth) && atLeast(fb.config->stencilBits, r.stencil) &&
-         atLeast(0, r.accumRed) && atLeast(0, r.accumGreen) && atLeast(0, r.accumBlue) && atLeast(0, r.accumAlpha) &&
-         atLeast(0, r.sampleBuffers) && atLeast(0, r.samples) &&
-         (r.renderType != kDontCare && (r.renderType & GLX_RGBA_BIT)) &&
+         exactly(get(GLX_DOUBLEBUFFER), r.doubleBuffer) && exactly(False, r.stereo) &&
+         atLeast(0, r.auxBuffers) && atLeast(8, r.red) && atLeast(8, r.green) && atLeast(8, r.blue) &&
+         atLeast(fb.config->alphaBits, r.alpha) && atLeast(fb.config->depthBits, r.depth) &&
+         atLeast(fb.config->stencilBits, r.stencil) && atLeast(0, r.accumRed) && atLeast(0, r.accumGreen) &&
+         atLeast(0, r.accumBlue) && atLeast(0, r.accumAlpha) && atLeast(0, r.sampleBuffers) &&
+         atLeast(0, r.samples) && (r.renderType != kDontCare && (r.renderType & GLX_RGBA_BIT)) &&
          mask(get(GLX_DRAWABLE_TYPE), r.drawableType) && exactly(get(GLX_X_RENDERABLE), r.xRenderable) &&
          exactly(get(GLX_X_VISUAL_TYPE), r.visualType) && exactly(GLX_NONE, r.caveat) &&
          exactly(GLX_NONE, r.transparentType);

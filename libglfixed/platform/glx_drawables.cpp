@@ -21,7 +21,8 @@ std::shared_ptr<Surface> x11Surface(Display* display, Drawable drawable, Visual*
   if (!x11DrawableSize(display, drawable, &width, &height, &depth)) return nullptr;
   std::unique_ptr<Presenter> presenter = makeX11Presenter(display, drawable, visual);
   if (!presenter) return nullptr;
-  return std::make_shared<Surface>(width, height, doubleBuffered, config.config->alphaBits, std::move(presenter));
+  return std::make_shared<Surface>(width, height, doubleBuffered, config.config->alphaBits,
+                                   std::move(presenter));
 }
 
 bool isWindow(Display* display, Window window) {
@@ -98,6 +99,22 @@ std::shared_ptr<GlxDrawable> currentDrawable() {
   return c ? c->draw : nullptr;
 }
 
+// X tells no one when a window is destroyed: the surfaces of windows used
+// directly (not GLXWindows, which glXDestroyWindow ends) that no context
+// holds any more are dropped once their window is gone, each time a new
+// window appears, so that a program making many windows does not keep the
+// buffers of all of them.
+void forgetDestroyedWindows(DisplayState& ds) {
+  for (auto it = ds.drawables.begin(); it != ds.drawables.end();) {
+    int width, height, depth;
+    if (it->second->kind == GlxDrawable::Kind::kWindow && it->second.use_count() == 1 &&
+        !x11DrawableSize(ds.display, it->second->x11, &width, &height, &depth))
+      it = ds.drawables.erase(it);
+    else
+      ++it;
+  }
+}
+
 }  // namespace
 
 std::shared_ptr<GlxDrawable> drawableFor(DisplayState& ds, GLXDrawable id, const FBConfig* config) {
@@ -109,6 +126,7 @@ std::shared_ptr<GlxDrawable> drawableFor(DisplayState& ds, GLXDrawable id, const
     return it->second;
   }
   if (!config || !isWindow(ds.display, id)) return nullptr;
+  forgetDestroyedWindows(ds);
   auto surface = x11Surface(ds.display, id, nullptr, config->config->doubleBuffered, *config);
   if (!surface) return nullptr;
   auto d = std::make_shared<GlxDrawable>();
@@ -147,12 +165,17 @@ GLAPI void APIENTRY glXSwapBuffers(Display* dpy, GLXDrawable drawable) {
   d->surface->swapBuffers();
 }
 
-GLAPI GLXWindow APIENTRY glXCreateWindow(Display* dpy, GLXFBConfig config, Window win, const int* attribList) {
+GLAPI GLXWindow APIENTRY glXCreateWindow(Display* dpy, GLXFBConfig config, Window win,
+                                         const int* attribList) {
   std::lock_guard<std::recursive_mutex> lock(glxMutex());
   DisplayState* ds = displayState(dpy);
   if (!ds || !isConfigOf(*ds, config) || !config->visualId) return None;
-  if (ds->drawables.count(win)) return None;  // BadAlloc: already a GLX drawable
-  auto surface = isWindow(dpy, win) ? x11Surface(dpy, win, nullptr, config->config->doubleBuffered, *config) : nullptr;
+  // BadAlloc if a GLXWindow exists for it already; a window used directly
+  // before becomes the GLXWindow (a context still bound keeps its surface).
+  auto existing = ds->drawables.find(win);
+  if (existing != ds->drawables.end() && existing->second->kind != GlxDrawable::Kind::kWindow) return None;
+  auto surface =
+      isWindow(dpy, win) ? x11Surface(dpy, win, nullptr, config->config->doubleBuffered, *config) : nullptr;
   if (!surface) return None;
   auto d = std::make_shared<GlxDrawable>();
   d->kind = GlxDrawable::Kind::kGlxWindow;
@@ -180,7 +203,8 @@ GLAPI void APIENTRY glXDestroyGLXPixmap(Display* dpy, GLXPixmap pixmap) {
   destroy(dpy, pixmap, GlxDrawable::Kind::kGlxPixmap);
 }
 
-GLAPI GLXPixmap APIENTRY glXCreatePixmap(Display* dpy, GLXFBConfig config, Pixmap pixmap, const int* attribList) {
+GLAPI GLXPixmap APIENTRY glXCreatePixmap(Display* dpy, GLXFBConfig config, Pixmap pixmap,
+                                         const int* attribList) {
   {
     std::lock_guard<std::recursive_mutex> lock(glxMutex());
     DisplayState* ds = displayState(dpy);

@@ -19,19 +19,21 @@ namespace {
 // The glyph's metrics, or null where the font has no such character.
 const XCharStruct* glyphOf(const XFontStruct& fs, unsigned c) {
   const unsigned byte1 = c >> 8, byte2 = c & 0xff;
-  if (byte1 < fs.min_byte1 || byte1 > fs.max_byte1 || byte2 < fs.min_char_or_byte2 || byte2 > fs.max_char_or_byte2)
+  if (byte1 < fs.min_byte1 || byte1 > fs.max_byte1 || byte2 < fs.min_char_or_byte2 ||
+      byte2 > fs.max_char_or_byte2)
     return nullptr;
   if (!fs.per_char) return &fs.min_bounds;  // every glyph has the same metrics
   const unsigned columns = fs.max_char_or_byte2 - fs.min_char_or_byte2 + 1;
   const XCharStruct* ch = &fs.per_char[(byte1 - fs.min_byte1) * columns + (byte2 - fs.min_char_or_byte2)];
-  if (ch->width == 0 && ch->lbearing == 0 && ch->rbearing == 0 && ch->ascent == 0 && ch->descent == 0) return nullptr;
+  if (ch->width == 0 && ch->lbearing == 0 && ch->rbearing == 0 && ch->ascent == 0 && ch->descent == 0)
+    return nullptr;
   return ch;
 }
 
 // The glyph drawn into a 1-bit pixmap and read back, as glBitmap wants it:
 // rows bottom to top, (width + 7) / 8 bytes each, most significant bit first.
-std::vector<GLubyte> glyphBits(Display* dpy, Window root, Font font, unsigned c, const XCharStruct& ch, int width,
-                               int height) {
+std::vector<GLubyte> glyphBits(Display* dpy, Window root, Font font, unsigned c, const XCharStruct& ch,
+                               int width, int height) {
   std::vector<GLubyte> bits(static_cast<size_t>((width + 7) / 8) * height, 0);
   Pixmap pixmap = XCreatePixmap(dpy, root, width, height, 1);
   XGCValues values;
@@ -49,7 +51,8 @@ std::vector<GLubyte> glyphBits(Display* dpy, Window root, Font font, unsigned c,
     const int rowBytes = (width + 7) / 8;
     for (int y = 0; y < height; ++y)
       for (int x = 0; x < width; ++x)
-        if (XGetPixel(image, x, y)) bits[static_cast<size_t>(height - 1 - y) * rowBytes + x / 8] |= 0x80 >> (x % 8);
+        if (XGetPixel(image, x, y))
+          bits[static_cast<size_t>(height - 1 - y) * rowBytes + x / 8] |= 0x80 >> (x % 8);
     XDestroyImage(image);
   }
   XFreeGC(dpy, gc);

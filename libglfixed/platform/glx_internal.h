@@ -42,8 +42,8 @@ using FBConfig = __GLXFBConfigRec;
 struct GlxDrawable {
   enum class Kind { kWindow, kGlxWindow, kGlxPixmap, kPbuffer };
   Kind kind = Kind::kWindow;
-  XID id = 0;           // the GLXDrawable (a window's own id for windows)
-  Drawable x11 = 0;     // the X window or pixmap; 0 for a pbuffer
+  XID id = 0;        // the GLXDrawable (a window's own id for windows)
+  Drawable x11 = 0;  // the X window or pixmap; 0 for a pbuffer
   const FBConfig* config = nullptr;
   std::shared_ptr<Surface> surface;
   unsigned long eventMask = 0;  // glXSelectEvent

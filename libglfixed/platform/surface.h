@@ -29,6 +29,9 @@ class Presenter {
   virtual void present(const ColorBuffer& front) = 0;
   // False if the size cannot be known (the window is gone).
   virtual bool windowSize(int* width, int* height) = 0;
+  // The connection is closing (XCloseDisplay's hooks run): send nothing
+  // more, not even from the destructor.
+  virtual void connectionClosing() {}
 };
 
 class Surface : public SurfaceHooks {
@@ -55,6 +58,10 @@ class Surface : public SurfaceHooks {
   void presentFront();
   // Reallocates the buffers to the window's current size if it changed.
   void checkWindowSize();
+  // The presenter's connection is closing: nothing is presented after.
+  void connectionClosing() {
+    if (presenter_) presenter_->connectionClosing();
+  }
 
   // The contexts whose framebuffer points into this surface, so that a resize
   // can point them at the new buffers (platform/surface.cpp: makeCurrent).

@@ -23,30 +23,50 @@ class X11Presenter : public Presenter {
     useShm_ = XShmQueryExtension(display_);
   }
   ~X11Presenter() override {
+    if (closing_) return;
     releaseShm();
     XFreeGC(display_, gc_);
   }
 
-  void present(const ColorBuffer& front) override {
-    if (!front.pixels) return;
-    if (useShm_ && presentShm(front)) return;
-    XImage* image = XCreateImage(display_, visual_, depth_, ZPixmap, 0, reinterpret_cast<char*>(front.pixels),
-                                 front.width, front.height, 32, front.rowLength * 4);
-    if (!image) return;
-    image->byte_order = LSBFirst;  // the buffers' B, G, R, X bytes
-    {
-      // A drawable destroyed under its surface is no error of the program's
-      // (Mesa's swap goes on): caught here, not left to its handler.
-      ErrorTrap trap(display_);
-      XPutImage(display_, drawable_, gc_, image, 0, 0, 0, 0, front.width, front.height);
-      trap.failed();
+  // Inside XCloseDisplay, libXext may have forgotten MIT-SHM already: an
+  // XShmDetach now would set it up again on a dying Display (and a later
+  // Display at the same address would find it). The server frees the
+  // segment with the connection; core requests (XFreeGC) are still fine.
+  void connectionClosing() override {
+    if (closing_) return;
+    if (shmInfo_.shmaddr) shmdt(shmInfo_.shmaddr);
+    shmInfo_.shmaddr = nullptr;
+    if (shmImage_) {
+      shmImage_->data = nullptr;
+      XDestroyImage(shmImage_);  // client memory only
+      shmImage_ = nullptr;
     }
-    image->data = nullptr;  // the surface's memory, not Xlib's to free
-    XDestroyImage(image);
+    XFreeGC(display_, gc_);
+    closing_ = gone_ = true;
+  }
+
+  // Under the error trap: a window destroyed under the context (the
+  // program's, or at exit) must not reach the program's error handler.
+  // After one failure the drawable is taken as gone: nothing more is sent
+  // to it, and its size is no longer asked.
+  void present(const ColorBuffer& front) override {
+    if (!front.pixels || gone_) return;
+    ErrorTrap trap(display_);
+    if (!(useShm_ && presentShm(front))) {
+      XImage* image = XCreateImage(display_, visual_, depth_, ZPixmap, 0, reinterpret_cast<char*>(front.pixels),
+                                   front.width, front.height, 32, front.rowLength * 4);
+      if (!image) return;
+      image->byte_order = LSBFirst;  // the buffers' B, G, R, X bytes
+      XPutImage(display_, drawable_, gc_, image, 0, 0, 0, 0, front.width, front.height);
+      image->data = nullptr;  // the surface's memory, not Xlib's to free
+      XDestroyImage(image);
+    }
+    if (trap.failed()) gone_ = true;
   }
 
   bool windowSize(int* width, int* height) override {
     int depth = 0;
+    if (gone_) return false;
     return x11DrawableSize(display_, drawable_, width, height, &depth);
   }
 
@@ -64,9 +84,8 @@ class X11Presenter : public Presenter {
     for (int y = 0; y < front.height; ++y)
       std::memcpy(shmImage_->data + static_cast<size_t>(y) * shmImage_->bytes_per_line,
                   front.pixels + static_cast<size_t>(y) * front.rowLength * 4, static_cast<size_t>(front.width) * 4);
-    ErrorTrap trap(display_);  // as in present()
     XShmPutImage(display_, drawable_, gc_, shmImage_, 0, 0, 0, 0, front.width, front.height, False);
-    trap.failed();  // waits for the server
+    XSync(display_, False);  // under present()'s error trap
     return true;
   }
 
@@ -114,6 +133,8 @@ class X11Presenter : public Presenter {
   XImage* shmImage_ = nullptr;
   XShmSegmentInfo shmInfo_{};
   bool attached_ = false;
+  bool gone_ = false;  // the drawable was destroyed
+  bool closing_ = false;  // the connection is closing
 };
 
 }  // namespace

@@ -3,9 +3,8 @@
 // Skipped where no Xvfb binary exists. The comparison of whole programs with
 // Mesa is tests/programs/'s; these check behaviour that can fail here.
 // gtest first: X11 headers define None, Bool, Status as macros.
-#include <gtest/gtest.h>
-
 #include <GL/gl.h>
+#include <gtest/gtest.h>
 #define GLX_GLXEXT_PROTOTYPES
 #include <GL/glx.h>
 #include <X11/Xutil.h>
@@ -17,6 +16,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <string>
@@ -139,7 +139,7 @@ TEST_F(GlxTest, ChooseVisualFollowsTheAttributes) {
   EXPECT_EQ(config(vis, GLX_RGBA), True);
   EXPECT_EQ(config(vis, GLX_DOUBLEBUFFER), True);
   EXPECT_EQ(config(vis, GLX_RED_SIZE), 8);
-  EXPECT_EQ(config(vis, GLX_DEPTH_SIZE), 24);  // the largest depth of at least 1
+  EXPECT_EQ(config(vis, GLX_DEPTH_SIZE), 24);   // the largest depth of at least 1
   EXPECT_EQ(config(vis, GLX_STENCIL_SIZE), 0);  // the smallest stencil
   EXPECT_EQ(config(vis, GLX_ALPHA_SIZE), 0);
   EXPECT_EQ(config(vis, GLX_X_VISUAL_TYPE), GLX_TRUE_COLOR);
@@ -195,8 +195,17 @@ TEST_F(GlxTest, ChooseFBConfigSortsAndFilters) {
   for (int i = 0; i < n; ++i) EXPECT_TRUE(attrib(configs[i], GLX_DRAWABLE_TYPE) & GLX_WINDOW_BIT);
   XFree(configs);
 
-  const int wanted[] = {GLX_DOUBLEBUFFER, True, GLX_DEPTH_SIZE, 16, GLX_STENCIL_SIZE, 8, GLX_RENDER_TYPE,
-                        GLX_RGBA_BIT, GLX_X_RENDERABLE, True, None};
+  const int wanted[] = {GLX_DOUBLEBUFFER,
+                        True,
+                        GLX_DEPTH_SIZE,
+                        16,
+                        GLX_STENCIL_SIZE,
+                        8,
+                        GLX_RENDER_TYPE,
+                        GLX_RGBA_BIT,
+                        GLX_X_RENDERABLE,
+                        True,
+                        None};
   configs = glXChooseFBConfig(dpy_, 0, wanted, &n);
   ASSERT_NE(configs, nullptr);
   for (int i = 0; i < n; ++i) {
@@ -407,8 +416,8 @@ TEST_F(GlxTest, ContextsShareDisplayListsAndFailQuietly) {
   EXPECT_FLOAT_EQ(clear[1], 0.25f);
 
   // Failures return False and raise no X error in the program.
-  EXPECT_FALSE(glXMakeCurrent(dpy_, 0x7ffffff, a));       // not a drawable
-  EXPECT_FALSE(glXMakeCurrent(dpy_, win, nullptr));       // BadMatch
+  EXPECT_FALSE(glXMakeCurrent(dpy_, 0x7ffffff, a));  // not a drawable
+  EXPECT_FALSE(glXMakeCurrent(dpy_, win, nullptr));  // BadMatch
   EXPECT_EQ(glXGetCurrentContext(), b);
   int id = 0;
   EXPECT_EQ(glXQueryContext(dpy_, b, GLX_SCREEN, &id), Success);
@@ -458,7 +467,8 @@ TEST_F(GlxTest, CreateContextAttribsGivesAtMostTheLibrarysVersion) {
 TEST_F(GlxTest, ProcAddressesAndStrings) {
   auto proc = [](const char* name) { return glXGetProcAddress(reinterpret_cast<const GLubyte*>(name)); };
   EXPECT_EQ(proc("glXSwapBuffers"), reinterpret_cast<__GLXextFuncPtr>(&glXSwapBuffers));
-  EXPECT_EQ(proc("glXCreateContextAttribsARB"), reinterpret_cast<__GLXextFuncPtr>(&glXCreateContextAttribsARB));
+  EXPECT_EQ(proc("glXCreateContextAttribsARB"),
+            reinterpret_cast<__GLXextFuncPtr>(&glXCreateContextAttribsARB));
   EXPECT_EQ(proc("glClear"), reinterpret_cast<__GLXextFuncPtr>(&glClear));
   EXPECT_EQ(proc("glXNoSuchFunction"), nullptr);
   EXPECT_EQ(proc("glNoSuchFunction"), nullptr);
@@ -527,12 +537,103 @@ TEST_F(GlxTest, SwapIntervalSpacesSwaps) {
   glXSwapBuffers(dpy_, win);
   const auto start = std::chrono::steady_clock::now();
   for (int i = 0; i < 4; ++i) glXSwapBuffers(dpy_, win);
-  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  const double ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   EXPECT_GE(ms, 4 * 2 * 16.0);  // four swaps, two 60 Hz periods apart
   EXPECT_EQ(glXSwapIntervalMESA(0), 0);
   EXPECT_EQ(glXGetSwapIntervalMESA(), 0);
   glXMakeCurrent(dpy_, None, nullptr);
   glXDestroyContext(dpy_, ctx);
+}
+
+TEST_F(GlxTest, GlxWindowDrawsLikeItsWindow) {
+  const int attrs[] = {GLX_DOUBLEBUFFER, True, None};
+  int n = 0;
+  GLXFBConfig* configs = glXChooseFBConfig(dpy_, 0, attrs, &n);
+  ASSERT_GT(n, 0);
+  XVisualInfo* vis = glXGetVisualFromFBConfig(dpy_, configs[0]);
+  ASSERT_NE(vis, nullptr);
+  const Window win = makeWindow(vis, 20, 20);
+  XFree(vis);
+  GLXWindow glxWin = glXCreateWindow(dpy_, configs[0], win, nullptr);
+  ASSERT_NE(glxWin, static_cast<GLXWindow>(None));
+  EXPECT_EQ(glXCreateWindow(dpy_, configs[0], win, nullptr), static_cast<GLXWindow>(None));  // one per window
+  GLXContext ctx = glXCreateNewContext(dpy_, configs[0], GLX_RGBA_TYPE, nullptr, True);
+  XFree(configs);
+  ASSERT_TRUE(glXMakeContextCurrent(dpy_, glxWin, glxWin, ctx));
+  glClearColor(1, 0, 1, 1);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glXSwapBuffers(dpy_, glxWin);
+  EXPECT_EQ(pixelAt(win, 19, 19), 0xff00ffu);
+  // Destroyed while current: drawn into and swapped until released.
+  glXDestroyWindow(dpy_, glxWin);
+  glClearColor(0, 1, 0, 1);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glXSwapBuffers(dpy_, glxWin);
+  EXPECT_EQ(pixelAt(win, 0, 0), 0x00ff00u);
+  ASSERT_TRUE(glXMakeContextCurrent(dpy_, None, None, nullptr));
+  glXDestroyContext(dpy_, ctx);
+}
+
+TEST_F(GlxTest, AWindowDestroyedUnderTheContextFailsQuietly) {
+  XVisualInfo* vis = chooseVisual({GLX_RGBA, GLX_DOUBLEBUFFER});
+  ASSERT_NE(vis, nullptr);
+  const Window win = makeWindow(vis, 20, 20);
+  GLXContext ctx = glXCreateContext(dpy_, vis, nullptr, True);
+  XFree(vis);
+  ASSERT_TRUE(glXMakeCurrent(dpy_, win, ctx));
+  glClear(GL_COLOR_BUFFER_BIT);
+  glXSwapBuffers(dpy_, win);
+  XDestroyWindow(dpy_, win);
+  XSync(dpy_, False);
+  for (int i = 0; i < 3; ++i) {
+    glClear(GL_COLOR_BUFFER_BIT);
+    glViewport(0, 0, 20, 20);
+    glXSwapBuffers(dpy_, win);
+  }
+  glDrawBuffer(GL_FRONT);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glFlush();
+  glXWaitGL();
+  EXPECT_EQ(gXErrors, 0);
+  ASSERT_TRUE(glXMakeCurrent(dpy_, None, nullptr));
+  glXDestroyContext(dpy_, ctx);
+}
+
+long residentKilobytes() {
+  FILE* f = std::fopen("/proc/self/status", "r");
+  if (!f) return -1;
+  char line[256];
+  long kb = -1;
+  while (std::fgets(line, sizeof line, f))
+    if (std::strncmp(line, "VmRSS:", 6) == 0) kb = std::atol(line + 6);
+  std::fclose(f);
+  return kb;
+}
+
+TEST_F(GlxTest, TheBuffersOfDestroyedWindowsAreLetGo) {
+#ifdef __SANITIZE_ADDRESS__
+  GTEST_SKIP() << "AddressSanitizer's quarantine keeps freed memory resident";
+#endif
+  XVisualInfo* vis = chooseVisual({GLX_RGBA, GLX_DOUBLEBUFFER});
+  ASSERT_NE(vis, nullptr);
+  GLXContext ctx = glXCreateContext(dpy_, vis, nullptr, True);
+  long before = 0;
+  // 80 windows of 512x512, double-buffered: 160 MB if every surface stayed.
+  for (int i = 0; i < 80; ++i) {
+    const Window win = makeWindow(vis, 512, 512);
+    ASSERT_TRUE(glXMakeCurrent(dpy_, win, ctx));
+    glClear(GL_COLOR_BUFFER_BIT);
+    glXSwapBuffers(dpy_, win);
+    ASSERT_TRUE(glXMakeCurrent(dpy_, None, nullptr));
+    XDestroyWindow(dpy_, win);
+    if (i == 4) before = residentKilobytes();
+  }
+  const long after = residentKilobytes();
+  ASSERT_GT(before, 0);
+  EXPECT_LT(after - before, 32 * 1024) << before << " kB, then " << after << " kB";
+  glXDestroyContext(dpy_, ctx);
+  XFree(vis);
 }
 
 }  // namespace

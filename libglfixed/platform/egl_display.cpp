@@ -24,9 +24,12 @@ namespace {
 
 // Displays are never freed: an EGLDisplay stays a valid handle for the life
 // of the process (§3.2), terminated or not.
+// EGLDisplay handles stay valid for the life of the process (EGL 1.5 §3.2),
+// also in a program's atexit handlers and static destructors: the list is
+// never destroyed (and the connections it holds stay reachable).
 std::vector<std::unique_ptr<EglDisplay>>& displays() {
-  static std::vector<std::unique_ptr<EglDisplay>> all;
-  return all;
+  static auto* all = new std::vector<std::unique_ptr<EglDisplay>>;
+  return *all;
 }
 
 EglDisplay* makeDisplay(Platform platform, void* nativeDisplay, int screen) {

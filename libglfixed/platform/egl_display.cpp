@@ -23,10 +23,11 @@ std::mutex& registryMutex() {
 namespace {
 
 // Displays are never freed: an EGLDisplay stays a valid handle for the life
-// of the process (§3.2), terminated or not.
+// of the process (§3.2), terminated or not. Not even at exit, when a context
+// may still be current on a surface and the X connection may be gone.
 std::vector<std::unique_ptr<EglDisplay>>& displays() {
-  static std::vector<std::unique_ptr<EglDisplay>> all;
-  return all;
+  static auto* all = new std::vector<std::unique_ptr<EglDisplay>>;
+  return *all;
 }
 
 EglDisplay* makeDisplay(Platform platform, void* nativeDisplay, int screen) {

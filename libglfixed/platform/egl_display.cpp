@@ -23,10 +23,8 @@ std::mutex& registryMutex() {
 namespace {
 
 // Displays are never freed: an EGLDisplay stays a valid handle for the life
-// of the process (§3.2), terminated or not.
-// EGLDisplay handles stay valid for the life of the process (EGL 1.5 §3.2),
-// also in a program's atexit handlers and static destructors: the list is
-// never destroyed (and the connections it holds stay reachable).
+// of the process (§3.2), terminated or not. Not even at exit, when a context
+// may still be current on a surface and the X connection may be gone.
 std::vector<std::unique_ptr<EglDisplay>>& displays() {
   static auto* all = new std::vector<std::unique_ptr<EglDisplay>>;
   return *all;

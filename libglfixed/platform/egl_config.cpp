@@ -39,8 +39,14 @@ bool configAttrib(const EglDisplay& d, const FramebufferConfig& c, EGLint attrib
     case EGL_COLOR_BUFFER_TYPE: *value = EGL_RGB_BUFFER; return true;
     case EGL_CONFIG_CAVEAT: *value = EGL_NONE; return true;
     case EGL_CONFIG_ID: *value = c.id; return true;
-    case EGL_CONFORMANT:
-    case EGL_RENDERABLE_TYPE: *value = EGL_OPENGL_BIT; return true;
+    case EGL_CONFORMANT: *value = EGL_OPENGL_BIT; return true;
+    // Debian's xscreensaver hacks (jwz's jwzgles code) choose a configuration
+    // renderable with OpenGL ES 1, then bind EGL_OPENGL_API and draw with
+    // GL 1.x calls; Mesa's configurations carry every API's bit, so they
+    // start there. They carry the ES 1 bit here too, for that reason only:
+    // EGL_CLIENT_APIS is "OpenGL", eglBindAPI(EGL_OPENGL_ES_API) fails, and
+    // no ES context can be made; ES 2 and 3 requests match nothing.
+    case EGL_RENDERABLE_TYPE: *value = EGL_OPENGL_BIT | EGL_OPENGL_ES_BIT; return true;
     case EGL_DEPTH_SIZE: *value = c.depthBits; return true;
     case EGL_STENCIL_SIZE: *value = c.stencilBits; return true;
     case EGL_LEVEL: *value = 0; return true;

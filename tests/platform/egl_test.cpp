@@ -120,7 +120,7 @@ TEST(EglNoDisplay, ConfigsAndAttributes) {
   for (EGLConfig c : configs) {
     EXPECT_EQ(attrib(dpy, c, EGL_RED_SIZE), 8);
     EXPECT_EQ(attrib(dpy, c, EGL_BUFFER_SIZE), 24 + attrib(dpy, c, EGL_ALPHA_SIZE));
-    EXPECT_EQ(attrib(dpy, c, EGL_RENDERABLE_TYPE), EGL_OPENGL_BIT);
+    EXPECT_EQ(attrib(dpy, c, EGL_RENDERABLE_TYPE), EGL_OPENGL_BIT | EGL_OPENGL_ES_BIT);  // egl_config.cpp says why
     EXPECT_EQ(attrib(dpy, c, EGL_SURFACE_TYPE), EGL_PBUFFER_BIT);  // no windows without X
     EXPECT_EQ(attrib(dpy, c, EGL_NATIVE_VISUAL_ID), 0);
     EXPECT_EQ(attrib(dpy, c, EGL_CONFIG_CAVEAT), EGL_NONE);
@@ -143,10 +143,16 @@ TEST(EglNoDisplay, ChooseConfigMatchesAndSorts) {
   // EGL_SURFACE_TYPE defaults to EGL_WINDOW_BIT: nothing on surfaceless.
   ASSERT_TRUE(eglChooseConfig(dpy, nullptr, nullptr, 0, &n));
   EXPECT_EQ(n, 0);
-  // OpenGL ES is not offered.
+  // OpenGL ES 2 is not offered; an ES 1 request matches (xscreensaver's,
+  // egl_config.cpp), but the ES API cannot be bound.
   const EGLint es[] = {EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RENDERABLE_TYPE, EGL_OPENGL_ES2_BIT, EGL_NONE};
   ASSERT_TRUE(eglChooseConfig(dpy, es, nullptr, 0, &n));
   EXPECT_EQ(n, 0);
+  const EGLint es1[] = {EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RENDERABLE_TYPE, EGL_OPENGL_ES_BIT, EGL_NONE};
+  ASSERT_TRUE(eglChooseConfig(dpy, es1, nullptr, 0, &n));
+  EXPECT_EQ(n, 8);
+  EXPECT_FALSE(eglBindAPI(EGL_OPENGL_ES_API));
+  EXPECT_EQ(eglGetError(), EGL_BAD_PARAMETER);
   // Sorting (§3.4.1): smaller buffer size, then smaller depth first.
   const EGLint any[] = {EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_NONE};
   EGLConfig c[8];

@@ -129,7 +129,9 @@ run_one() {
     echo "missing" >"$out/status/$lib.$idx"; return
   fi
   if [ "$lib" = glfixed ]; then
-    LD_LIBRARY_PATH="$dropin${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}" \
+    # GLFX_GLFIXED_ENV: extra VAR=value words for the libglfixed runs only
+    # (a sanitizer build's runtime, preloaded into piglit's programs).
+    env LD_LIBRARY_PATH="$dropin${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}" ${GLFX_GLFIXED_ENV:-} \
       timeout -k 5 "$limit" "$bin/${argv[0]}" "${argv[@]:1}" -auto >"$log" 2>&1 </dev/null
   else
     timeout -k 5 "$limit" "$bin/${argv[0]}" "${argv[@]:1}" -auto >"$log" 2>&1 </dev/null

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <vector>
 
 namespace glfixed {
 
@@ -16,6 +17,21 @@ void clearColor(const ColorBuffer& c, const ColorBufferAttrib& cb, const PixelBo
   uint8_t value[4];
   for (int i = 0; i < 4; ++i) value[i] = floatToUnorm8(cb.clearColor[i]);
   const bool allChannels = cb.writeMask[0] && cb.writeMask[1] && cb.writeMask[2] && cb.writeMask[3];
+  const int x0 = std::max(box.x0, 0), x1 = std::min(box.x1, c.width);
+  if (allChannels && c.bytesPerPixel == 4 && x1 > x0) {
+    // The common clear: one row of the pixel built once, copied into every
+    // row (an unused fourth byte is set too; nothing reads it).
+    uint8_t pixel[4] = {255, 255, 255, 255};
+    pixel[c.red] = value[0];
+    pixel[c.green] = value[1];
+    pixel[c.blue] = value[2];
+    if (c.alpha >= 0) pixel[c.alpha] = value[3];
+    std::vector<uint8_t> row(static_cast<size_t>(x1 - x0) * 4);
+    for (size_t i = 0; i < row.size(); i += 4) std::memcpy(&row[i], pixel, 4);
+    for (int y = std::max(box.y0, 0); y < std::min(box.y1, c.height); ++y)
+      std::memcpy(c.pixel(x0, y), row.data(), row.size());
+    return;
+  }
   for (int y = std::max(box.y0, 0); y < std::min(box.y1, c.height); ++y) {
     for (int x = std::max(box.x0, 0); x < std::min(box.x1, c.width); ++x) {
       if (allChannels) {

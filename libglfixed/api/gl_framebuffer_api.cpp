@@ -68,7 +68,7 @@ GLAPI void APIENTRY glClear(GLbitfield mask) {
   const PixelBox box = clearBox(*ctx, &byQuad);
   if (mask & GL_COLOR_BUFFER_BIT) {
     clearColor(fb.color, ctx->colorBuffer, box);
-    if (fb.buffersNamed(ctx->colorBuffer.drawBuffer, false) == Framebuffer::Buffers::kBoth)
+    if (fb.drawsIntoBoth(ctx->colorBuffer.drawBuffer))
       clearColor(fb.front, ctx->colorBuffer, box);
   }
   if ((mask & GL_DEPTH_BUFFER_BIT) && ctx->depth.writeMask && fb.depth.bits() > 0) {

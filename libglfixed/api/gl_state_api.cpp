@@ -236,7 +236,7 @@ void flushToSurface() {
   if (!ctx || !ctx->framebuffer.surface) return;
   const Framebuffer& fb = ctx->framebuffer;
   const bool frontDrawn = fb.color.pixels == fb.front.pixels ||
-                          fb.buffersNamed(ctx->colorBuffer.drawBuffer, false) == Framebuffer::Buffers::kBoth;
+                          fb.drawsIntoBoth(ctx->colorBuffer.drawBuffer);
   if (frontDrawn) fb.surface->frontBufferFlushed();
 }
 }  // namespace

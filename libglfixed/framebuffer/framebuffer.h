@@ -116,6 +116,7 @@ struct Framebuffer {
   // invalid operation), and an unknown name is kUnknown (an invalid enum).
   enum class Buffers { kUnknown, kMissing, kNone, kFront, kBack, kBoth };
   Buffers buffersNamed(GLenum buffer, bool forReading) const;
+  bool drawsIntoBoth(GLenum drawBuffer) const { return buffersNamed(drawBuffer, false) == Buffers::kBoth; }
   // Points `color` and `read` at the buffers GL state names; for kBoth
   // `color` is the back buffer, and the draws and glClear do the front one
   // too (pipeline/draw.cpp, api/gl_framebuffer_api.cpp).

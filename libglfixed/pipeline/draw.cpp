@@ -140,7 +140,7 @@ void drawBatch(Context& ctx, const VertexBatch& batch, primitive::PrimitiveState
     return primitive::feedbackPrimitives(ps, shaded, ctx.framebuffer.height(), ctx.current.texCoord[0],
                                          ctx.renderMode.feedback);
   Framebuffer& fb = ctx.framebuffer;
-  if (fb.buffersNamed(ctx.colorBuffer.drawBuffer, false) != Framebuffer::Buffers::kBoth)
+  if (!fb.drawsIntoBoth(ctx.colorBuffer.drawBuffer))
     return primitive::drawPrimitives(ps, shaded, fb);
   // GL_FRONT_AND_BACK (and GL_LEFT) on a double-buffered surface: the same
   // primitives into the back buffer, then into the front one from the same

@@ -159,14 +159,7 @@ GLAPI GLboolean APIENTRY OSMesaMakeCurrent(OSMesaContext ctx, void* buffer, GLen
   glfixed::DepthBuffer& depth = ctx->context.framebuffer.depth;
   if (depth.width() != width || depth.height() != height || depth.bits() != ctx->context.requestedDepthBits)
     depth.resize(width, height, ctx->context.requestedDepthBits);
-  // GL 2.1 §2.11.1: the viewport starts as the size of the first drawable.
-  if (!ctx->context.viewportInitialized) {
-    ctx->context.viewport.width = width;
-    ctx->context.viewport.height = height;
-    ctx->context.scissor.width = width;  // the scissor box likewise (§4.1.2)
-    ctx->context.scissor.height = height;
-    ctx->context.viewportInitialized = true;
-  }
+  ctx->context.sizeToFirstSurface(width, height, false);  // OSMesa buffers are single-buffered
   tCurrent = ctx;
   glfixed::setCurrentContext(&ctx->context);
   return GL_TRUE;

@@ -61,11 +61,15 @@ void Surface::swapBuffers() {
   if (doubleBuffered_) {
     // The views of the attached contexts follow the exchanged memory.
     std::lock_guard<std::mutex> lock(mutex_);
-    for (Context* ctx : attached_)
-      bindSurfaces(*ctx, dynamic_cast<Surface*>(ctx->framebuffer.surface),
-                   dynamic_cast<Surface*>(ctx->framebuffer.readSurface));
+    rebindAttached();
   }
   checkWindowSize();
+}
+
+void Surface::rebindAttached() {
+  for (Context* ctx : attached_)
+    bindSurfaces(*ctx, dynamic_cast<Surface*>(ctx->framebuffer.surface),
+                 dynamic_cast<Surface*>(ctx->framebuffer.readSurface));
 }
 
 void Surface::checkWindowSize() {
@@ -75,9 +79,7 @@ void Surface::checkWindowSize() {
   std::lock_guard<std::mutex> lock(mutex_);
   for (Context* ctx : attached_) pipeline::flushVertices(*ctx);
   resize(w, h);
-  for (Context* ctx : attached_)
-    bindSurfaces(*ctx, dynamic_cast<Surface*>(ctx->framebuffer.surface),
-                 dynamic_cast<Surface*>(ctx->framebuffer.readSurface));
+  rebindAttached();
 }
 
 void Surface::attach(Context* ctx) {
@@ -127,16 +129,7 @@ void makeCurrent(Context* ctx, Surface* draw, Surface* read) {
   }
   if (!ctx) return setCurrentContext(nullptr);
   detachAll(*ctx);
-  if (draw && !ctx->viewportInitialized) {
-    ctx->viewport.width = draw->width();
-    ctx->viewport.height = draw->height();
-    ctx->scissor.width = draw->width();
-    ctx->scissor.height = draw->height();
-    ctx->viewportInitialized = true;
-    const GLenum initial = draw->doubleBuffered() ? GL_BACK : GL_FRONT;
-    ctx->colorBuffer.drawBuffer = initial;
-    ctx->pixelMode.readBuffer = initial;
-  }
+  if (draw) ctx->sizeToFirstSurface(draw->width(), draw->height(), draw->doubleBuffered());
   bindSurfaces(*ctx, draw, read);
   if (draw) draw->attach(ctx);
   if (read && read != draw) read->attach(ctx);

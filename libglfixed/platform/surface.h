@@ -75,6 +75,7 @@ class Surface : public SurfaceHooks {
  private:
   ColorBuffer view(const std::vector<uint8_t>& pixels) const;
   void resize(int width, int height);
+  void rebindAttached();  // with mutex_ held: the attached contexts' views again
 
   int width_, height_;
   bool doubleBuffered_;

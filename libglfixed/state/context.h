@@ -84,6 +84,16 @@ class Context {
   Framebuffer framebuffer;
   int requestedDepthBits;
   bool viewportInitialized = false;  // the first MakeCurrent sets the viewport
+  // At the context's first surface (unless glViewport came first): the
+  // viewport and scissor box take its size (GL 2.1 §2.11.1, §4.1.2), and the
+  // draw and read buffers start as GL_BACK on a double-buffered one (§4.2.1).
+  void sizeToFirstSurface(int width, int height, bool doubleBuffered) {
+    if (viewportInitialized) return;
+    viewport.width = scissor.width = width;
+    viewport.height = scissor.height = height;
+    viewportInitialized = true;
+    colorBuffer.drawBuffer = pixelMode.readBuffer = doubleBuffered ? GL_BACK : GL_FRONT;
+  }
 
   // Between glBegin and glEnd (GL 2.1 §2.6.3).
   bool insideBeginEnd = false;

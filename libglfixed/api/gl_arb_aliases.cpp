@@ -46,6 +46,7 @@ GLAPI void APIENTRY glMultiDrawElementsEXT(GLenum mode, const GLsizei* count, GL
   glMultiDrawElements(mode, count, type, indices, drawcount);
 }
 GLAPI void APIENTRY glClientActiveTextureARB(GLenum texture) { glClientActiveTexture(texture); }
+GLAPI void APIENTRY glActiveTextureARB(GLenum texture) { glActiveTexture(texture); }
 
 // ARB_point_parameters, EXT_point_parameters.
 GLAPI void APIENTRY glPointParameterfARB(GLenum pname, GLfloat param) { glPointParameterf(pname, param); }
@@ -104,6 +105,7 @@ const Alias kAliases[] = {
     GLFX_ALIAS(glGetBufferPointervARB),   GLFX_ALIAS(glDrawRangeElementsEXT),
     GLFX_ALIAS(glMultiDrawArraysEXT),     GLFX_ALIAS(glMultiDrawElementsEXT),
     GLFX_ALIAS(glClientActiveTextureARB),
+    GLFX_ALIAS(glActiveTextureARB),
     GLFX_ALIAS(glPointParameterfARB),     GLFX_ALIAS(glPointParameterfvARB),
     GLFX_ALIAS(glPointParameterfEXT),     GLFX_ALIAS(glPointParameterfvEXT),
     GLFX_ALIAS(glLoadTransposeMatrixfARB), GLFX_ALIAS(glLoadTransposeMatrixdARB),

@@ -132,6 +132,7 @@ bool queryHeldState(Context& ctx, GLenum pname, StateValue& out) {
     case GL_ZOOM_X: out.set({ctx.pixelMode.zoomX}); return true;
     case GL_ZOOM_Y: out.set({ctx.pixelMode.zoomY}); return true;
     case GL_ACTIVE_TEXTURE: out.set({double(ctx.texture.activeTexture)}); return true;
+    case GL_MAX_TEXTURE_UNITS: out.set({double(kMaxTextureUnits)}); return true;
     case GL_SAMPLE_COVERAGE_VALUE: out.set({ctx.multisample.sampleCoverageValue}); return true;
     case GL_SAMPLE_COVERAGE_INVERT: out.set({double(ctx.multisample.sampleCoverageInvert)}); return true;
     default: return false;

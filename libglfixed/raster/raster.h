@@ -9,8 +9,12 @@
 
 namespace glfixed::raster {
 
-// Primary RGBA, then secondary RGBA (separate specular colour).
-constexpr int kMaxVaryings = 8;
+// The varyings of a window vertex: primary RGBA (0..3), secondary RGBA
+// (4..7, the separate specular colour), then s, t, r, q of texture unit u at
+// kTexCoordVarying + 4 u.
+constexpr int kTexCoordVarying = 8;
+constexpr int kMaxTexCoordUnits = 8;
+constexpr int kMaxVaryings = kTexCoordVarying + 4 * kMaxTexCoordUnits;
 
 // A vertex in window coordinates AS LLVMPIPE SEES THEM: Mesa renders an OSMesa
 // buffer upside down (gallium's y = 0 is the top row) and flips it when it
@@ -35,6 +39,9 @@ struct RasterState {
   bool depthWrite = true;
   bool colorWrite[4] = {true, true, true, true};
   int varyingCount = 4;  // 4: primary colour; 8: primary + secondary, summed per fragment
+  // Bit u: the vertices carry unit u's texture coordinates (varyings
+  // kTexCoordVarying + 4 u ...), interpolated perspective-correct, never flat.
+  uint32_t texCoordUnits = 0;
   // Only pixels in [scissorX0, scissorX1) x [scissorY0, scissorY1) are written,
   // in GL window coordinates (y up): the viewport intersected with the buffer.
   int scissorX0 = 0, scissorY0 = 0, scissorX1 = 0, scissorY1 = 0;

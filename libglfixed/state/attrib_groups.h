@@ -12,6 +12,10 @@
 #include <cstdint>
 #include <glm/glm.hpp>
 
+#include "state/texgen_attrib.h"
+#include "state/texture_binding_attrib.h"
+#include "state/texture_env_attrib.h"
+
 namespace glfixed {
 
 constexpr int kMaxTextureUnits = 8;
@@ -110,17 +114,17 @@ struct TextureUnitEnables {
   }
 };
 
-// GL_TEXTURE_BIT (tables 6.25-6.27, without texture objects and texgen planes,
-// which come with texturing).
+// GL_TEXTURE_BIT (tables 6.25-6.27): per unit, the enables, the bound
+// texture names, the environment and texgen. Each part has its own header,
+// owned by the stage that uses it.
 struct TextureAttrib {
   GLenum activeTexture = GL_TEXTURE0;
   std::array<TextureUnitEnables, kMaxTextureUnits> enables;
-  struct Env {
-    GLenum mode = GL_MODULATE;
-    glm::vec4 color{0, 0, 0, 0};
-  };
-  std::array<Env, kMaxTextureUnits> env;
-  TextureUnitEnables& activeEnables() { return enables[activeTexture - GL_TEXTURE0]; }
+  std::array<TextureBindings, kMaxTextureUnits> binding;
+  std::array<TexEnvAttrib, kMaxTextureUnits> env;
+  std::array<TexGenAttrib, kMaxTextureUnits> texgen;
+  int activeUnit() const { return static_cast<int>(activeTexture - GL_TEXTURE0); }
+  TextureUnitEnables& activeEnables() { return enables[activeUnit()]; }
 };
 
 }  // namespace glfixed

@@ -270,6 +270,9 @@ bool setupLine(const RasterState& state, const Framebuffer& fb, const LineStyle&
       t.varying[k] = info.plane(v1.varying[k] * v1.oneOverW, v2.varying[k] * v2.oneOverW);
     }
   }
+  setTexCoordPlanes(
+      state, t, [&] { return info.plane(v1.oneOverW, v2.oneOverW); },
+      [&](int k) { return info.plane(v1.varying[k] * v1.oneOverW, v2.varying[k] * v2.oneOverW); });
   return true;
 }
 
@@ -337,7 +340,7 @@ void drawSmoothLine(const RasterState& lineState, Framebuffer& fb, float width, 
 void drawLine(const RasterState& state, Framebuffer& fb, const LineStyle& style, const WindowVertex& v1,
               const WindowVertex& v2, const float* flatVaryings) {
   PrimitiveSetup t;
-  if (setupLine(state, fb, style, v1, v2, flatVaryings, t)) shadePrimitive(state, fb, t);
+  if (setupLine(state, fb, style, v1, v2, flatVaryings, t)) fragment::shadePrimitive(state, fb, t);
 }
 
 }  // namespace glfixed::raster

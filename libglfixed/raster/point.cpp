@@ -93,6 +93,8 @@ bool setupPoint(const RasterState& state, const Framebuffer& fb, const WindowVer
     for (int k = 0; k < t.varyingCount; ++k) t.flat[k] = flatVaryings[k];
   t.w = Plane{v.oneOverW, 0.0f, 0.0f};
   for (int k = 0; k < t.varyingCount; ++k) t.varying[k] = Plane{v.varying[k] * v.oneOverW, 0.0f, 0.0f};
+  setTexCoordPlanes(
+      state, t, [&] { return t.w; }, [&](int k) { return Plane{v.varying[k] * v.oneOverW, 0.0f, 0.0f}; });
   return true;
 }
 
@@ -100,7 +102,7 @@ void drawPoint(const RasterState& state, Framebuffer& fb, const WindowVertex& v,
                const float* flatVaryings) {
   PrimitiveSetup t;
   if (!setupPoint(state, fb, v, size, flatVaryings, t)) return;
-  shadePrimitive(state, fb, t);
+  fragment::shadePrimitive(state, fb, t);
 }
 
 namespace {

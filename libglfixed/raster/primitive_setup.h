@@ -2,9 +2,8 @@
 // go. llvmpipe rasterizes triangles, lines and points alike, as a convex
 // polygon of 3 or 4 fixed-point edges with attribute planes
 // (lp_setup_tri.c, lp_setup_line.c, lp_setup_point.c); only the set-up
-// differs. triangle.cpp (and the line and point set-ups) fill these; the span
-// shaders (scalar in triangle.cpp, AVX2 in shade_avx2.cpp) consume them and
-// must give identical results.
+// differs. triangle.cpp (and the line and point set-ups) fill these; the
+// fragment stage (fragment/shade.h) shades them.
 #pragma once
 
 #include <GL/gl.h>
@@ -28,6 +27,9 @@ struct PrimitiveSetup {
   float flat[kMaxVaryings];
   bool flatPrimary = false, flatSecondary = false;  // these take `flat`, uninterpolated
   int varyingCount = 4;
+  // RasterState::texCoordUnits: bit u, varying[kTexCoordVarying + 4u ..]
+  // holds unit u's s, t, r, q planes (always interpolated, with `w` set).
+  uint32_t texCoordUnits = 0;
   int x0 = 0, x1 = -1, y0 = 0, y1 = -1;  // inclusive pixel bounds, llvmpipe (y-down) rows
   // Smooth points (raster/point.cpp): one of the two triangles of the draw
   // module's aapoint quad, whose fragment shader Mesa rewrites
@@ -35,7 +37,6 @@ struct PrimitiveSetup {
   // [-1, 1]; a fragment with d > 1 is discarded; else alpha is multiplied by
   // (1 - d) / (1 - k) where d <= k, and by 1 elsewhere (sic: Mesa's NIR pass
   // swaps the two, so the disc's inside is brightened and its rim kept).
-  // Only the scalar shader has this rule; shadePrimitive sends these there.
   bool aaPoint = false;
   Plane aaS, aaT;  // s and t times 1/w, as a perspective input
   float aaK = 0;
@@ -55,35 +56,26 @@ struct PrimitiveSetup {
   const uint32_t* stipple = nullptr;
 };
 
-// The aaline coverage factor of a fragment, `oow` being 1 / t.w there (both
-// shaders compute exactly this).
-inline float lineCoverageAt(const PrimitiveSetup& t, float px, float py, float oow) {
-  auto saturate = [](float v) { return std::fmin(std::fmax(v, 0.0f), 1.0f); };
-  const float across = saturate(t.coverageHalfWidth - std::fabs(t.coverageX.at(px, py) * oow));
-  const float along = saturate(t.coverageHalfLength - std::fabs(t.coverageZ.at(px, py) * oow));
-  return across * (along * t.coverageAlongScale);
-}
+}  // namespace glfixed::raster
 
-// The framebuffer as the span shaders see it.
-struct ShadeTarget {
-  int height = 0;  // rows: llvmpipe row py is GL row height - 1 - py
-  // colour
-  const ColorBuffer* color = nullptr;
-  int bytesPerPixel = 4, red = 0, green = 1, blue = 2, alpha = 3;
-  bool colorWrite[4] = {true, true, true, true};
-  bool anyColor = true, allColor = true;
-  // depth (bits 0: no depth test)
-  int depthBits = 0;
-  void* depth = nullptr;  // row-major, GL rows, `depthWidth` values a row
-  int depthWidth = 0;
-  bool depthWrite = true;
-  GLenum depthFunc = GL_LESS;
-  bool secondary = false;  // add varyings 4..6 to 0..2
-  // The polygon stipple the fragments pass (null: none): the setup's
-  // (triangles), or the state's for every primitive while Mesa's stipple
-  // shader stays bound (RasterState::stippleEveryPrimitive).
-  const uint32_t* stipple = nullptr;
-};
+namespace glfixed::fragment {
+// Shades every fragment of a set-up primitive (fragment/shade.cpp).
+void shadePrimitive(const raster::RasterState& state, Framebuffer& fb, const raster::PrimitiveSetup& t);
+}  // namespace glfixed::fragment
+
+namespace glfixed::raster {
+
+// The texture coordinate planes of the units in state.texCoordUnits (and
+// the 1/w plane they need): `plane(k)` makes varying k's plane.
+template <typename MakePlane, typename MakeW>
+inline void setTexCoordPlanes(const RasterState& state, PrimitiveSetup& t, MakeW&& makeW, MakePlane&& plane) {
+  t.texCoordUnits = state.texCoordUnits;
+  if (!t.texCoordUnits) return;
+  t.w = makeW();
+  for (int u = 0; u < kMaxTexCoordUnits; ++u)
+    if (t.texCoordUnits & (1u << u))
+      for (int k = kTexCoordVarying + 4 * u; k < kTexCoordVarying + 4 * u + 4; ++k) t.varying[k] = plane(k);
+}
 
 // Bounding box, edges and planes of a triangle with positive snapped area;
 // false when it covers no pixel of the drawable region.
@@ -104,7 +96,6 @@ bool setupPoint(const RasterState& state, const Framebuffer& fb, const WindowVer
 bool setupLine(const RasterState& state, const Framebuffer& fb, const LineStyle& style,
                const WindowVertex& v1, const WindowVertex& v2, const float* flatVaryings,
                PrimitiveSetup& out);
-ShadeTarget makeShadeTarget(const RasterState& state, Framebuffer& fb, const PrimitiveSetup& t);
 
 // `state` with the point and line region as its drawable box: the quads of
 // smooth points and lines are not clipped, only cut at that region.
@@ -116,10 +107,6 @@ inline RasterState cutAtPointLineRegion(const RasterState& state) {
   r.scissorY1 = state.pointLineRegion.y1;
   return r;
 }
-
-// Shades every fragment of a set-up primitive (the AVX2 shader where the CPU
-// has it, else the scalar one).
-void shadePrimitive(const RasterState& state, Framebuffer& fb, const PrimitiveSetup& t);
 
 // Polygon stipple of one GL row: bit 31 - (x % 32) is pixel x (GL 2.1 §3.6.2).
 inline uint32_t stippleRow(const uint32_t* stipple, int glY) { return stipple[glY & 31]; }
@@ -152,29 +139,7 @@ void drawStageTriangle(const RasterState& state, Framebuffer& fb, const WindowVe
   const PlaneSetup planes(a.x, a.y, b.x, b.y, c.x, c.y);
   t.w = planes.plane(a.oneOverW, b.oneOverW, c.oneOverW);
   addPlanes(t, planes, order);
-  shadePrimitive(state, fb, t);
+  fragment::shadePrimitive(state, fb, t);
 }
-
-// Calls span(py, lo, hi) for every row of the primitive with pixels inside,
-// [lo, hi] being exactly the pixels inside on that row. (shade_avx2.cpp has
-// the same loop written out, to keep it inside its target attribute.)
-template <typename Span>
-inline void forEachSpan(const PrimitiveSetup& t, Span&& span) {
-  EdgeSpanStepper edge[kMaxEdges];
-  for (int i = 0; i < t.edgeCount; ++i) edge[i] = EdgeSpanStepper(t.edge[i], t.y0);
-  for (int py = t.y0; py <= t.y1; ++py) {
-    int64_t lo = t.x0, hi = t.x1;
-    for (int i = 0; i < t.edgeCount; ++i) edge[i].clip(lo, hi);
-    if (lo <= hi) span(py, static_cast<int>(lo), static_cast<int>(hi));
-    for (int i = 0; i < t.edgeCount; ++i) edge[i].nextRow();
-  }
-}
-
-// Shades every pixel of the primitive, one fragment at a time.
-void shadePrimitiveScalar(const PrimitiveSetup& t, const ShadeTarget& s);
-// The same with AVX2 and FMA, eight fragments at a time, to the same bits.
-// Call only when the CPU has both (haveAvx2Fma()).
-void shadePrimitiveAvx2(const PrimitiveSetup& t, const ShadeTarget& s);
-bool haveAvx2Fma();
 
 }  // namespace glfixed::raster

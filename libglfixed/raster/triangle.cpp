@@ -1,5 +1,6 @@
-// Triangle rasterization: bounding box, exact edge spans, per-fragment depth
-// test and colour, all in llvmpipe's y-down window space (see raster.h).
+// Triangle set-up: snapping, bounding box, edges, attribute planes and
+// polygon offset, in llvmpipe's y-down window space (see raster.h); the
+// fragments are shaded by the fragment stage (fragment/shade.h).
 // Every float operation here must round exactly as llvmpipe's does: forbid
 // contracting a * b + c into a fused multiply-add (GCC contracts by default
 // in C++ whenever the target has FMA).
@@ -9,7 +10,7 @@
 #include <cmath>
 #include <cstdint>
 
-#include "raster/depth.h"
+#include "fragment/shade.h"
 #include "raster/edge.h"
 #include "raster/interpolate.h"
 #include "raster/primitive_setup.h"
@@ -25,101 +26,6 @@ int snapTriangle(const WindowVertex& v0, const WindowVertex& v1, const WindowVer
   }
   int64_t area = fixedArea(out);
   return area > 0 ? 1 : (area < 0 ? -1 : 0);
-}
-
-namespace {
-
-// The reference for the AVX2 shader: one fragment at a time.
-void shadeSpanScalar(const PrimitiveSetup& t, const ShadeTarget& s, int py, int lo, int hi) {
-  const int glY = s.height - 1 - py;
-  const float fpy = static_cast<float>(py);
-  uint8_t* colorRow = s.color->pixel(0, glY);
-  uint32_t* depth32 =
-      s.depthBits == 24 ? static_cast<uint32_t*>(s.depth) + size_t(glY) * s.depthWidth : nullptr;
-  uint16_t* depth16 =
-      s.depthBits == 16 ? static_cast<uint16_t*>(s.depth) + size_t(glY) * s.depthWidth : nullptr;
-  const uint32_t stipple = s.stipple ? stippleRow(s.stipple, glY) : ~0u;
-  for (int px = lo; px <= hi; ++px) {
-    const float fpx = static_cast<float>(px);
-    if (!stipplePasses(stipple, px)) continue;  // polygon stipple: the fragment is discarded
-    // Smooth points: the aapoint shader's discard and alpha factor (primitive_setup.h).
-    float aaFactor = 1.0f;
-    if (t.aaPoint) {
-      const float oowAa = 1.0f / t.w.at(fpx, fpy);
-      const float ps = t.aaS.at(fpx, fpy) * oowAa, pt = t.aaT.at(fpx, fpy) * oowAa;
-      const float d = ps * ps + pt * pt;
-      if (1.0f < d) continue;
-      const float coverage = (1.0f / (1.0f - t.aaK)) * (1.0f - d);
-      aaFactor = t.aaK >= d ? coverage : 1.0f;
-    }
-    if (s.depthBits) {
-      const uint32_t z = depthToUnorm(t.z.at(fpx, fpy) + t.zOffset, s.depthBits);
-      const uint32_t stored = depth32 ? depth32[px] : depth16[px];
-      if (!depthPasses(s.depthFunc, z, stored)) continue;
-      if (s.depthWrite) {
-        if (depth32)
-          depth32[px] = z;
-        else
-          depth16[px] = static_cast<uint16_t>(z);
-      }
-    }
-    if (!s.anyColor) continue;
-    float c[kMaxVaryings] = {};
-    const bool smooth = !t.flatPrimary || (s.secondary && !t.flatSecondary) || t.lineCoverage;
-    const float oow = smooth ? 1.0f / t.w.at(fpx, fpy) : 0.0f;
-    for (int k = 0; k < t.varyingCount; ++k) {
-      const bool flat = k < 4 ? t.flatPrimary : t.flatSecondary;
-      c[k] = flat ? t.flat[k] : t.varying[k].at(fpx, fpy) * oow;
-    }
-    // GL_LINE_SMOOTH: the aaline stage's coverage scales alpha (lines only).
-    if (t.lineCoverage) c[3] = c[3] * lineCoverageAt(t, fpx, fpy, oow);
-    if (s.secondary) {  // GL 2.1 §3.9: colour sum, rgb only
-      c[0] += c[4];
-      c[1] += c[5];
-      c[2] += c[6];
-    }
-    if (t.aaPoint) c[3] = c[3] * aaFactor;
-    const uint8_t rgba[4] = {colorToUnorm8(c[0]), colorToUnorm8(c[1]), colorToUnorm8(c[2]),
-                             colorToUnorm8(c[3])};
-    uint8_t* p = colorRow + size_t(px) * s.bytesPerPixel;
-    const int offset[4] = {s.red, s.green, s.blue, s.alpha};
-    for (int k = 0; k < 4; ++k)
-      if (s.colorWrite[k] && offset[k] >= 0) p[offset[k]] = rgba[k];
-  }
-}
-
-}  // namespace
-
-void shadePrimitiveScalar(const PrimitiveSetup& t, const ShadeTarget& s) {
-  forEachSpan(t, [&](int py, int lo, int hi) { shadeSpanScalar(t, s, py, lo, hi); });
-}
-
-namespace {
-const bool kUseAvx2 = haveAvx2Fma();
-}  // namespace
-
-ShadeTarget makeShadeTarget(const RasterState& state, Framebuffer& fb, const PrimitiveSetup& t) {
-  ShadeTarget s;
-  s.height = fb.height();
-  s.color = &fb.color;
-  s.bytesPerPixel = fb.color.bytesPerPixel;
-  s.red = fb.color.red;
-  s.green = fb.color.green;
-  s.blue = fb.color.blue;
-  s.alpha = fb.color.alpha;
-  for (int k = 0; k < 4; ++k) s.colorWrite[k] = state.colorWrite[k];
-  s.anyColor = state.colorWrite[0] || state.colorWrite[1] || state.colorWrite[2] || state.colorWrite[3];
-  s.allColor = state.colorWrite[0] && state.colorWrite[1] && state.colorWrite[2] && state.colorWrite[3];
-  if (state.depthTest && fb.depth.bits() != 0) {
-    s.depthBits = fb.depth.bits();
-    s.depth = fb.depth.data();
-    s.depthWidth = fb.depth.width();
-    s.depthWrite = state.depthWrite;
-    s.depthFunc = state.depthFunc;
-  }
-  s.secondary = t.varyingCount == 8;
-  s.stipple = t.stipple ? t.stipple : (state.stippleEveryPrimitive ? state.polygonStipple : nullptr);
-  return s;
 }
 
 float polygonOffsetZ(const RasterState& state, int depthBits, const WindowVertex& v0, const WindowVertex& v1,
@@ -188,15 +94,12 @@ bool setupTriangle(const RasterState& state, const Framebuffer& fb, const FixedT
           ps.plane(v0.varying[k] * v0.oneOverW, v1.varying[k] * v1.oneOverW, v2.varying[k] * v2.oneOverW);
     }
   }
+  setTexCoordPlanes(
+      state, t, [&] { return ps.plane(v0.oneOverW, v1.oneOverW, v2.oneOverW); },
+      [&](int k) {
+        return ps.plane(v0.varying[k] * v0.oneOverW, v1.varying[k] * v1.oneOverW, v2.varying[k] * v2.oneOverW);
+      });
   return true;
-}
-
-void shadePrimitive(const RasterState& state, Framebuffer& fb, const PrimitiveSetup& t) {
-  const ShadeTarget target = makeShadeTarget(state, fb, t);
-  if (kUseAvx2 && !t.aaPoint)  // smooth points: the scalar shader only (primitive_setup.h)
-    shadePrimitiveAvx2(t, target);
-  else
-    shadePrimitiveScalar(t, target);
 }
 
 void rasterCcwTriangle(const RasterState& state, Framebuffer& fb, const FixedTriangle& fixed,
@@ -204,7 +107,7 @@ void rasterCcwTriangle(const RasterState& state, Framebuffer& fb, const FixedTri
                        const float* flatVaryings) {
   PrimitiveSetup t;
   if (!setupTriangle(state, fb, fixed, v0, v1, v2, flatVaryings, t)) return;
-  shadePrimitive(state, fb, t);
+  fragment::shadePrimitive(state, fb, t);
 }
 
 void drawTriangle(const RasterState& state, Framebuffer& fb, const WindowVertex& v0, const WindowVertex& v1,

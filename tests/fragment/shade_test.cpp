@@ -1,4 +1,5 @@
-// The AVX2 span shader must give exactly the scalar shader's bits.
+// The two builds of the block shader (generic x86-64, AVX2 and FMA) must give
+// the same bits.
 #include <gtest/gtest.h>
 
 #include <random>
@@ -6,6 +7,7 @@
 #include "raster/raster.h"
 #include "raster/test_surface.h"
 #include "raster/primitive_setup.h"
+#include "fragment/shade.h"
 
 namespace glfixed::raster {
 namespace {
@@ -16,15 +18,28 @@ void shadeAll(const RasterState& st, TestSurface& s, const FixedTriangle& f, con
               const float* flat, bool avx2) {
   PrimitiveSetup t;
   if (!setupTriangle(st, s.fb, f, v[0], v[1], v[2], flat, t)) return;
-  const ShadeTarget target = makeShadeTarget(st, s.fb, t);
+  const fragment::ShadeTarget target = fragment::makeShadeTarget(st, s.fb, t);
   if (avx2)
-    shadePrimitiveAvx2(t, target);
+    fragment::shadePrimitiveAvx2(t, target);
   else
-    shadePrimitiveScalar(t, target);
+    fragment::shadePrimitiveGeneric(t, target);
 }
 
-TEST(Shade, Avx2MatchesScalar) {
-  if (!haveAvx2Fma()) GTEST_SKIP() << "no AVX2/FMA on this CPU";
+// Three vertices in and around a 40x40 surface, z in [0, 1].
+void randomVertices(std::mt19937& rng, WindowVertex v[3]) {
+  std::uniform_real_distribution<float> pos(-4, 44), unit(0, 1);
+  for (int i = 0; i < 3; ++i) {
+    WindowVertex& x = v[i];
+    x.x = pos(rng);
+    x.y = pos(rng);
+    x.z = unit(rng);
+    x.oneOverW = 0.2f + unit(rng);
+    for (float& c : x.varying) c = unit(rng);
+  }
+}
+
+TEST(Shade, Avx2MatchesGeneric) {
+  if (!fragment::haveAvx2Fma()) GTEST_SKIP() << "no AVX2/FMA on this CPU";
   std::mt19937 rng(5);
   std::uniform_real_distribution<float> pos(-4, 44), unit(0, 1);
   const GLenum funcs[] = {GL_LESS,   GL_LEQUAL,   GL_EQUAL,  GL_GREATER,
@@ -67,8 +82,8 @@ TEST(Shade, Avx2MatchesScalar) {
 
 // Lines: the line set-up's quadrilaterals, and triangles carrying a smooth
 // line's coverage (flat and smooth colours).
-TEST(Shade, Avx2MatchesScalarForLines) {
-  if (!haveAvx2Fma()) GTEST_SKIP() << "no AVX2/FMA on this CPU";
+TEST(Shade, Avx2MatchesGenericForLines) {
+  if (!fragment::haveAvx2Fma()) GTEST_SKIP() << "no AVX2/FMA on this CPU";
   std::mt19937 rng(9);
   std::uniform_real_distribution<float> pos(-4, 44), unit(0, 1);
   for (int iter = 0; iter < 400; ++iter) {
@@ -78,13 +93,7 @@ TEST(Shade, Avx2MatchesScalarForLines) {
     const bool flatColours = iter % 3 == 1;
     for (int prim = 0; prim < 4; ++prim) {
       WindowVertex v[3];
-      for (auto& x : v) {
-        x.x = pos(rng);
-        x.y = pos(rng);
-        x.z = unit(rng);
-        x.oneOverW = 0.2f + unit(rng);
-        for (float& c : x.varying) c = unit(rng);
-      }
+      randomVertices(rng, v);
       const float* flat = flatColours ? v[1].varying : nullptr;
       PrimitiveSetup t;
       bool drawn;
@@ -114,8 +123,43 @@ TEST(Shade, Avx2MatchesScalarForLines) {
         }
       }
       if (!drawn) continue;
-      shadePrimitiveScalar(t, makeShadeTarget(st, a.fb, t));
-      shadePrimitiveAvx2(t, makeShadeTarget(st, b.fb, t));
+      fragment::shadePrimitiveGeneric(t, fragment::makeShadeTarget(st, a.fb, t));
+      fragment::shadePrimitiveAvx2(t, fragment::makeShadeTarget(st, b.fb, t));
+    }
+    ASSERT_EQ(a.pixels, b.pixels) << "iteration " << iter;
+  }
+}
+
+// Smooth points: triangles carrying the aapoint shader's (s, t) planes, its
+// discard and alpha factor, with and without a depth test.
+TEST(Shade, Avx2MatchesGenericForSmoothPoints) {
+  if (!fragment::haveAvx2Fma()) GTEST_SKIP() << "no AVX2/FMA on this CPU";
+  std::mt19937 rng(13);
+  std::uniform_real_distribution<float> pos(-4, 44), unit(0, 1);
+  for (int iter = 0; iter < 300; ++iter) {
+    TestSurface a(40, 40), b(40, 40);
+    RasterState st = a.state();
+    st.depthTest = iter % 2 == 0;
+    for (int prim = 0; prim < 4; ++prim) {
+      WindowVertex v[3];
+      randomVertices(rng, v);
+      FixedTriangle f;
+      const int sign = snapTriangle(v[0], v[1], v[2], f);
+      if (sign < 0) {
+        std::swap(v[0], v[1]);
+        snapTriangle(v[0], v[1], v[2], f);
+      }
+      const float* flat = iter % 3 == 1 ? v[1].varying : nullptr;
+      PrimitiveSetup t;
+      if (sign == 0 || !setupTriangle(st, a.fb, f, v[0], v[1], v[2], flat, t)) continue;
+      const PlaneSetup ps(v[0].x, v[0].y, v[1].x, v[1].y, v[2].x, v[2].y);
+      t.w = ps.plane(v[0].oneOverW, v[1].oneOverW, v[2].oneOverW);
+      t.aaPoint = true;
+      t.aaS = ps.plane(-1.2f * v[0].oneOverW, 1.1f * v[1].oneOverW, 0.3f * v[2].oneOverW);
+      t.aaT = ps.plane(-0.9f * v[0].oneOverW, -1.0f * v[1].oneOverW, 1.3f * v[2].oneOverW);
+      t.aaK = 0.5f * unit(rng);
+      fragment::shadePrimitiveGeneric(t, fragment::makeShadeTarget(st, a.fb, t));
+      fragment::shadePrimitiveAvx2(t, fragment::makeShadeTarget(st, b.fb, t));
     }
     ASSERT_EQ(a.pixels, b.pixels) << "iteration " << iter;
   }

@@ -1,0 +1,82 @@
+// The fragment stage's two builds of the one block shader (block_shader.inc):
+// for any x86-64 CPU, and with AVX2 and FMA; shadePrimitive picks the second
+// where the CPU has it. Both give the same bits (tests/fragment/shade_test.cpp).
+#pragma GCC optimize("fp-contract=off")
+#pragma GCC diagnostic ignored "-Wpsabi"
+
+#include "fragment/shade.h"
+
+#include <GL/gl.h>
+
+#include <climits>
+#include <cstdint>
+#include <cstring>
+
+#include "fragment/isa.h"
+#include "raster/depth.h"
+#include "raster/edge.h"
+#include "raster/interpolate.h"
+#include "raster/primitive_setup.h"
+
+namespace glfixed::fragment {
+namespace generic {
+#define GLFIXED_BLOCK_AVX2 0
+#include "fragment/block_shader.inc"
+#undef GLFIXED_BLOCK_AVX2
+}  // namespace generic
+
+#pragma GCC push_options
+#pragma GCC target("avx2,fma")
+namespace avx2 {
+#define GLFIXED_BLOCK_AVX2 1
+#include "fragment/block_shader.inc"
+#undef GLFIXED_BLOCK_AVX2
+}  // namespace avx2
+#pragma GCC pop_options
+
+bool haveAvx2Fma() { return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma"); }
+
+void shadePrimitiveGeneric(const raster::PrimitiveSetup& t, const ShadeTarget& s) { generic::shadeBlocks(t, s); }
+
+__attribute__((target("avx2,fma"))) void shadePrimitiveAvx2(const raster::PrimitiveSetup& t, const ShadeTarget& s) {
+  avx2::shadeBlocks(t, s);
+}
+
+namespace {
+const bool kUseAvx2 = haveAvx2Fma();
+}  // namespace
+
+ShadeTarget makeShadeTarget(const raster::RasterState& state, Framebuffer& fb, const raster::PrimitiveSetup& t) {
+  ShadeTarget s;
+  s.width = fb.width();
+  s.height = fb.height();
+  s.color = &fb.color;
+  s.bytesPerPixel = fb.color.bytesPerPixel;
+  s.red = fb.color.red;
+  s.green = fb.color.green;
+  s.blue = fb.color.blue;
+  s.alpha = fb.color.alpha;
+  for (int k = 0; k < 4; ++k) s.colorWrite[k] = state.colorWrite[k];
+  s.anyColor = state.colorWrite[0] || state.colorWrite[1] || state.colorWrite[2] || state.colorWrite[3];
+  s.allColor = state.colorWrite[0] && state.colorWrite[1] && state.colorWrite[2] && state.colorWrite[3];
+  if (state.depthTest && fb.depth.bits() != 0) {
+    s.depthBits = fb.depth.bits();
+    s.depth = fb.depth.data();
+    s.depthWidth = fb.depth.width();
+    s.depthWrite = state.depthWrite;
+    s.depthFunc = state.depthFunc;
+  }
+  s.secondary = t.varyingCount == 8;
+  s.stipple = t.stipple ? t.stipple : (state.stippleEveryPrimitive ? state.polygonStipple : nullptr);
+  return s;
+}
+
+void shadePrimitive(const raster::RasterState& state, Framebuffer& fb, const raster::PrimitiveSetup& t) {
+  const ShadeTarget target = makeShadeTarget(state, fb, t);
+  if (kUseAvx2)
+    shadePrimitiveAvx2(t, target);
+  else
+    shadePrimitiveGeneric(t, target);
+}
+
+}  // namespace glfixed::fragment

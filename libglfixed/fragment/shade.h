@@ -1,0 +1,50 @@
+// The fragment stage: every fragment of a set-up primitive (raster/
+// primitive_setup.h) through the per-fragment operations, in blocks of two
+// 2x2 quads (fragment/lanes.h), as llvmpipe shades them. Triangles, lines and
+// points all end here.
+#pragma once
+
+#include <GL/gl.h>
+
+#include <cstdint>
+
+#include "framebuffer/framebuffer.h"
+#include "raster/primitive_setup.h"
+#include "raster/raster.h"
+
+namespace glfixed::fragment {
+
+// What a primitive's fragments are shaded with, fixed for the primitive: the
+// per-fragment state (which operations run, the key) and where they write.
+struct ShadeTarget {
+  int width = 0, height = 0;  // llvmpipe row py is GL row height - 1 - py
+  // colour
+  const ColorBuffer* color = nullptr;
+  int bytesPerPixel = 4, red = 0, green = 1, blue = 2, alpha = 3;
+  bool colorWrite[4] = {true, true, true, true};
+  bool anyColor = true, allColor = true;
+  // depth (bits 0: no depth test)
+  int depthBits = 0;
+  void* depth = nullptr;  // row-major, GL rows, `depthWidth` values a row
+  int depthWidth = 0;
+  bool depthWrite = true;
+  GLenum depthFunc = GL_LESS;
+  bool secondary = false;  // colour sum: add varyings 4..6 to 0..2 (GL 2.1 §3.9)
+  // The polygon stipple the fragments pass (null: none): the setup's
+  // (triangles), or the state's for every primitive while Mesa's stipple
+  // shader stays bound (RasterState::stippleEveryPrimitive).
+  const uint32_t* stipple = nullptr;
+};
+
+ShadeTarget makeShadeTarget(const raster::RasterState& state, Framebuffer& fb, const raster::PrimitiveSetup& t);
+
+// Shades every fragment of the primitive (the AVX2 build of the block shader
+// where the CPU has it, else the generic one: the same bits).
+void shadePrimitive(const raster::RasterState& state, Framebuffer& fb, const raster::PrimitiveSetup& t);
+
+// The two builds, for tests. Call the AVX2 one only when haveAvx2Fma().
+bool haveAvx2Fma();
+void shadePrimitiveGeneric(const raster::PrimitiveSetup& t, const ShadeTarget& s);
+void shadePrimitiveAvx2(const raster::PrimitiveSetup& t, const ShadeTarget& s);
+
+}  // namespace glfixed::fragment

@@ -13,6 +13,7 @@
 #include <cstring>
 
 #include "fragment/isa.h"
+#include "fragment/texture_stage.h"
 #include "raster/depth.h"
 #include "raster/edge.h"
 #include "raster/interpolate.h"
@@ -68,6 +69,7 @@ ShadeTarget makeShadeTarget(const raster::RasterState& state, Framebuffer& fb, c
   }
   s.secondary = t.varyingCount == 8;
   s.stipple = t.stipple ? t.stipple : (state.stippleEveryPrimitive ? state.polygonStipple : nullptr);
+  s.textures = state.textures && state.textures->unitCount > 0 ? state.textures : nullptr;
   return s;
 }
 

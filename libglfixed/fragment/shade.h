@@ -14,6 +14,8 @@
 
 namespace glfixed::fragment {
 
+struct TextureStage;  // fragment/texture_stage.h
+
 // What a primitive's fragments are shaded with, fixed for the primitive: the
 // per-fragment state (which operations run, the key) and where they write.
 struct ShadeTarget {
@@ -34,6 +36,8 @@ struct ShadeTarget {
   // (triangles), or the state's for every primitive while Mesa's stipple
   // shader stays bound (RasterState::stippleEveryPrimitive).
   const uint32_t* stipple = nullptr;
+  // Texturing and the texture environments (null: no unit textures).
+  const TextureStage* textures = nullptr;
 };
 
 ShadeTarget makeShadeTarget(const raster::RasterState& state, Framebuffer& fb, const raster::PrimitiveSetup& t);

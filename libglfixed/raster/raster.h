@@ -7,6 +7,10 @@
 #include "framebuffer/framebuffer.h"
 #include "raster/edge.h"
 
+namespace glfixed::fragment {
+struct TextureStage;  // fragment/texture_stage.h
+}  // namespace glfixed::fragment
+
 namespace glfixed::raster {
 
 // The varyings of a window vertex: primary RGBA (0..3), secondary RGBA
@@ -42,6 +46,9 @@ struct RasterState {
   // Bit u: the vertices carry unit u's texture coordinates (varyings
   // kTexCoordVarying + 4 u ...), interpolated perspective-correct, never flat.
   uint32_t texCoordUnits = 0;
+  // The draw's texturing (null or no unit: none), which the fragment stage
+  // applies; owned by the draw.
+  const fragment::TextureStage* textures = nullptr;
   // Only pixels in [scissorX0, scissorX1) x [scissorY0, scissorY1) are written,
   // in GL window coordinates (y up): the viewport intersected with the buffer.
   int scissorX0 = 0, scissorY0 = 0, scissorX1 = 0, scissorY1 = 0;

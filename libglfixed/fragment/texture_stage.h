@@ -1,0 +1,22 @@
+// The texturing of one draw, as the fragment stage reads it (GL 2.1
+// §3.8.15-3.8.16): the units that texture, in unit order, each with the
+// view its sampler reads and its environment. Built once per draw from the
+// context (pipeline/draw.cpp); the fragment stage never reads the context.
+#pragma once
+
+#include "fragment/texture_env.h"
+#include "texture/sampler.h"
+
+namespace glfixed::fragment {
+
+struct TextureStage {
+  struct Unit {
+    int unit = 0;
+    texture::SamplerView view;
+    TexEnvUnit env;
+  };
+  int unitCount = 0;
+  Unit units[kMaxTextureEnvUnits];
+};
+
+}  // namespace glfixed::fragment

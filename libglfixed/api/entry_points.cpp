@@ -64,6 +64,8 @@ extern "C" void glfx_stub_glGenerateMipmap(GLenum target) {
 }
 extern "C" GLAPI void APIENTRY glGenerateMipmap(GLenum target)
     __attribute__((weak, alias("glfx_stub_glGenerateMipmap")));
+// Textures: the EXT_framebuffer_object name of glGenerateMipmap (api/gl_tex_image_api.cpp).
+extern "C" GLAPI void APIENTRY glGenerateMipmapEXT(GLenum target);
 
 namespace glfixed::api {
 
@@ -146,6 +148,7 @@ const Entry kEglEntries[] = {
     EGL_ENTRY(eglWaitNative), EGL_ENTRY(eglWaitSync),
     {"glGenerateMipmap", reinterpret_cast<void*>(&glGenerateMipmap),
      reinterpret_cast<void*>(&glfx_stub_glGenerateMipmap)},
+    {"glGenerateMipmapEXT", reinterpret_cast<void*>(&glGenerateMipmapEXT), nullptr},  // textures
 };
 #undef EGL_ENTRY
 

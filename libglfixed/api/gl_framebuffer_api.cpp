@@ -120,13 +120,18 @@ GLAPI void APIENTRY glPixelStorei(GLenum pname, GLint param) {
     case GL_UNPACK_ROW_LENGTH: target = &p.unpackRowLength; break;
     case GL_UNPACK_SKIP_PIXELS: target = &p.unpackSkipPixels; break;
     case GL_UNPACK_SKIP_ROWS: target = &p.unpackSkipRows; break;
-    case GL_PACK_SWAP_BYTES: case GL_PACK_LSB_FIRST: case GL_UNPACK_SWAP_BYTES: case GL_UNPACK_LSB_FIRST:
-    case GL_PACK_IMAGE_HEIGHT: case GL_PACK_SKIP_IMAGES: case GL_UNPACK_IMAGE_HEIGHT: case GL_UNPACK_SKIP_IMAGES:
-      if (param != 0 && pname != GL_PACK_IMAGE_HEIGHT && pname != GL_PACK_SKIP_IMAGES &&
-          pname != GL_UNPACK_IMAGE_HEIGHT && pname != GL_UNPACK_SKIP_IMAGES)
-        ctx->recordError(GL_INVALID_OPERATION);  // byte swapping is not implemented
-      else if (param < 0)
-        ctx->recordError(GL_INVALID_VALUE);
+    // Textures: the 3D image layout, and the byte order of unpacked texture
+    // images (texture/unpack.cpp). glDrawPixels and the pack side do not
+    // swap bytes yet, nor does anything honour LSB_FIRST: still an error.
+    case GL_PACK_IMAGE_HEIGHT: target = &p.packImageHeight; break;
+    case GL_PACK_SKIP_IMAGES: target = &p.packSkipImages; break;
+    case GL_UNPACK_IMAGE_HEIGHT: target = &p.unpackImageHeight; break;
+    case GL_UNPACK_SKIP_IMAGES: target = &p.unpackSkipImages; break;
+    case GL_UNPACK_SWAP_BYTES:
+      p.unpackSwapBytes = param != 0;
+      return;
+    case GL_PACK_SWAP_BYTES: case GL_PACK_LSB_FIRST: case GL_UNPACK_LSB_FIRST:
+      if (param != 0) ctx->recordError(GL_INVALID_OPERATION);  // not implemented
       return;
     default:
       ctx->recordError(GL_INVALID_ENUM);

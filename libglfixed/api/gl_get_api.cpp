@@ -9,6 +9,7 @@
 #include "state/vertex_array_queries.h"
 #include "state/capabilities.h"
 #include "api/eval_commands.h"
+#include "texture/texture_object.h"
 #include "vertex/lighting_queries.h"
 
 using namespace glfixed;
@@ -133,6 +134,16 @@ bool queryHeldState(Context& ctx, GLenum pname, StateValue& out) {
     case GL_ZOOM_Y: out.set({ctx.pixelMode.zoomY}); return true;
     case GL_ACTIVE_TEXTURE: out.set({double(ctx.texture.activeTexture)}); return true;
     case GL_MAX_TEXTURE_UNITS: out.set({double(kMaxTextureUnits)}); return true;
+    // Texture objects: the active unit's bindings, and llvmpipe's limits.
+    case GL_TEXTURE_BINDING_1D: out.set({double(ctx.texture.binding[ctx.texture.activeUnit()].texture1D)}); return true;
+    case GL_TEXTURE_BINDING_2D: out.set({double(ctx.texture.binding[ctx.texture.activeUnit()].texture2D)}); return true;
+    case GL_TEXTURE_BINDING_3D: out.set({double(ctx.texture.binding[ctx.texture.activeUnit()].texture3D)}); return true;
+    case GL_TEXTURE_BINDING_CUBE_MAP:
+      out.set({double(ctx.texture.binding[ctx.texture.activeUnit()].textureCubeMap)});
+      return true;
+    case GL_MAX_TEXTURE_SIZE: out.set({double(texture::kMaxTextureSize)}); return true;
+    case GL_MAX_3D_TEXTURE_SIZE: out.set({double(texture::kMax3DTextureSize)}); return true;
+    case GL_MAX_CUBE_MAP_TEXTURE_SIZE: out.set({double(texture::kMaxTextureSize)}); return true;
     case GL_SAMPLE_COVERAGE_VALUE: out.set({ctx.multisample.sampleCoverageValue}); return true;
     case GL_SAMPLE_COVERAGE_INVERT: out.set({double(ctx.multisample.sampleCoverageInvert)}); return true;
     default: return false;
@@ -246,6 +257,13 @@ bool queryCoreState(Context& ctx, GLenum pname, StateValue& out) {
     case GL_UNPACK_ROW_LENGTH: out.set({double(ctx.pixelStore.unpackRowLength)}); return true;
     case GL_UNPACK_SKIP_PIXELS: out.set({double(ctx.pixelStore.unpackSkipPixels)}); return true;
     case GL_UNPACK_SKIP_ROWS: out.set({double(ctx.pixelStore.unpackSkipRows)}); return true;
+    // Textures: the pixel store state of texture images (texture/unpack.h).
+    case GL_UNPACK_IMAGE_HEIGHT: out.set({double(ctx.pixelStore.unpackImageHeight)}); return true;
+    case GL_UNPACK_SKIP_IMAGES: out.set({double(ctx.pixelStore.unpackSkipImages)}); return true;
+    case GL_PACK_IMAGE_HEIGHT: out.set({double(ctx.pixelStore.packImageHeight)}); return true;
+    case GL_PACK_SKIP_IMAGES: out.set({double(ctx.pixelStore.packSkipImages)}); return true;
+    case GL_UNPACK_SWAP_BYTES: out.set({double(ctx.pixelStore.unpackSwapBytes)}); return true;
+    case GL_PACK_SWAP_BYTES: case GL_PACK_LSB_FIRST: case GL_UNPACK_LSB_FIRST: out.set({0.0}); return true;
     case GL_ATTRIB_STACK_DEPTH: out.set({double(ctx.attribStack.depth())}); return true;
     case GL_MAX_ATTRIB_STACK_DEPTH: out.set({double(kMaxAttribStackDepth)}); return true;
     case GL_CURRENT_RASTER_POSITION: {

@@ -258,7 +258,7 @@ EGLAPI EGLContext EGLAPIENTRY eglCreateContext(EGLDisplay dpy, EGLConfig config,
   ctx->config = c;
   ctx->majorVersion = request.major;
   ctx->minorVersion = request.minor;
-  if (share) ctx->context->displayLists.shareWith(share->context->displayLists);
+  if (share) ctx->context->shareObjectsWith(*share->context);
   d->contexts.push_back(std::move(ctx));
   return succeed(static_cast<EGLContext>(d->contexts.back().get()));
 }

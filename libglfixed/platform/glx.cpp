@@ -102,7 +102,7 @@ GLXContext createContext(Display* dpy, const FBConfig* config, GLXContext share)
   auto* c = new (std::nothrow) __GLXcontextRec(dpy, config, gNextContextId++);
   if (!c) return nullptr;
   if (share) {
-    c->context.displayLists.shareWith(share->context.displayLists);
+    c->context.shareObjectsWith(share->context);
     // Texture objects are shared with the display lists once they exist
     // (issue 14).
     c->shareId = share->id;

@@ -91,7 +91,7 @@ GLAPI OSMesaContext APIENTRY OSMesaCreateContextExt(GLenum format, GLint depthBi
     return nullptr;
   }
   osmesa_context* c = new (std::nothrow) osmesa_context(f, depthBitsFor(depthBits, stencilBits));
-  if (c && sharelist) c->context.displayLists.shareWith(sharelist->context.displayLists);
+  if (c && sharelist) c->context.shareObjectsWith(sharelist->context);
   return c;
 }
 

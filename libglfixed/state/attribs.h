@@ -109,6 +109,9 @@ struct PixelStoreAttrib {
   GLint unpackAlignment = 4, unpackRowLength = 0, unpackSkipPixels = 0, unpackSkipRows = 0;
   // GL 2.1 puts the pixel buffer bindings (§4.3.5, table 6.34) in this group.
   GLuint pixelPackBufferBinding = 0, pixelUnpackBufferBinding = 0;
+  // Textures (3D images, byte order; texture/unpack.h reads them).
+  GLint unpackImageHeight = 0, unpackSkipImages = 0, packImageHeight = 0, packSkipImages = 0;
+  bool unpackSwapBytes = false;
 };
 
 }  // namespace glfixed

@@ -5,6 +5,7 @@
 
 #include <GL/gl.h>
 
+#include <memory>
 #include <vector>
 
 #include "framebuffer/framebuffer.h"
@@ -24,6 +25,7 @@
 #include "state/vertex_array_attrib.h"
 #include "state/raster_pos.h"
 #include "state/render_mode.h"
+#include "texture/texture_objects.h"
 #include "vertex/light_constants.h"
 #include "vertex/vertex_stage.h"
 
@@ -136,6 +138,15 @@ class Context {
 
   // Display lists (GL 2.1 §5.4): per context for now.
   pipeline::DisplayLists displayLists;
+
+  // Textures (texture objects): the name space and the objects, shared with
+  // the contexts this one shares display lists with (shareObjectsWith).
+  std::shared_ptr<texture::TextureObjects> textures = std::make_shared<texture::TextureObjects>();
+  // Called where a context is created sharing another's lists (OSMesa, GLX, EGL).
+  void shareObjectsWith(Context& other) {
+    displayLists.shareWith(other.displayLists);
+    textures = other.textures;
+  }
 
   // Errors (GL 2.1 §2.5): the first error is kept until glGetError reads it.
   // With GLFIXED_DEBUG set, every error is also printed (state/diagnostics.h).

@@ -19,7 +19,29 @@ enum class TexelFormat : uint8_t {
   A8,
   I8,
   L8A8,
-  // More come with the internal formats (texture/texel_format.cpp lists them).
+  // The rest of the formats llvmpipe stores GL 2.1's internal formats in
+  // (texture/texel_format.cpp; reference/MESA_FACTS.md "Textures: storage").
+  // Every channel is kept in its own 1, 2 or 4 bytes (little-endian), holding
+  // the n-bit value the pipe format holds: the precision is llvmpipe's, the
+  // bit packing is not.
+  L4A4,     // GL_LUMINANCE4_ALPHA4
+  RGBA4,    // GL_RGBA2, GL_RGBA4, GL_RGBA + 4_4_4_4
+  RGBX4,    // GL_RGB4
+  RGB5X1,   // GL_RGB5
+  RGB5A1,   // GL_RGB5_A1
+  R5G6B5,   // GL_RGB + 5_6_5
+  R3G3B2,   // GL_R3_G3_B2
+  RGB10X2,  // GL_RGB10
+  RGB10A2,  // GL_RGB10_A2
+  RGBA16,   // GL_RGBA12, GL_RGBA16, GL_RGBA + GL_UNSIGNED_SHORT
+  RGBX16,   // GL_RGB12, GL_RGB16
+  L16,
+  A16,
+  I16,
+  L16A16,
+  Z16,  // depth, one channel: 2 bytes
+  Z24,  // 4 bytes, the value in the low 24 bits
+  Z32,  // 4 bytes, 32-bit unsigned normalized
   Count
 };
 
@@ -29,7 +51,19 @@ struct TexelFormatInfo {
   // llvmpipe's sampler may filter it in 8-bit fixed point (sampler.cpp).
   bool fitsUnorm8;
   GLenum baseFormat;  // GL_RGBA, GL_RGB, GL_LUMINANCE, ... (table 3.15)
+  int channels;        // stored channels (an RGB format stores an unused fourth)
+  int bytesPerChannel; // 1, 2 or 4
+  uint8_t bits[4];     // the bits of each stored channel (0: unused)
 };
+
+// The component sizes glGetTexLevelParameter reports (GL_TEXTURE_RED_SIZE ...).
+struct ComponentSizes {
+  int red = 0, green = 0, blue = 0, alpha = 0, luminance = 0, intensity = 0, depth = 0;
+};
+ComponentSizes componentSizes(TexelFormat format);
+
+// The stored value of channel `c` of one texel.
+uint32_t storedChannel(TexelFormat format, const uint8_t* texel, int c);
 
 const TexelFormatInfo& texelFormatInfo(TexelFormat format);
 

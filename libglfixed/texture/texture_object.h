@@ -10,11 +10,14 @@
 #include <glm/glm.hpp>
 #include <vector>
 
+#include "state/buffer_objects.h"  // DataStore: calloc, so a huge image fails as GL_OUT_OF_MEMORY
 #include "texture/texel_format.h"
 
 namespace glfixed::texture {
 
 constexpr int kMaxTextureLevels = 15;  // GL_MAX_TEXTURE_SIZE 16384, as llvmpipe
+constexpr int kMaxTextureSize = 16384;  // GL_MAX_TEXTURE_SIZE, GL_MAX_CUBE_MAP_TEXTURE_SIZE (Mesa)
+constexpr int kMax3DTextureSize = 2048;  // GL_MAX_3D_TEXTURE_SIZE (Mesa): 12 levels
 constexpr int kMaxCubeFaces = 6;       // +X, -X, +Y, -Y, +Z, -Z (GL's face order)
 
 // One mipmap level of one face, stored as llvmpipe stores it: no border
@@ -26,7 +29,7 @@ struct TextureImage {
   GLint internalFormat = 0;              // as the application gave it (glGetTexLevelParameter)
   TexelFormat format = TexelFormat::RGBA8;
   size_t rowStride = 0, imageStride = 0;
-  std::vector<uint8_t> texels;
+  DataStore texels;
   bool defined() const { return width > 0; }
   const uint8_t* texel(int x, int y, int z) const {
     return texels.data() + size_t(z) * imageStride + size_t(y) * rowStride +

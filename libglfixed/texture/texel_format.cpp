@@ -1,0 +1,116 @@
+// The stored texel formats (texel_format.h): their layout, component sizes
+// and decoding. Which GL internal format lands in which of them is
+// texture/internal_format.cpp.
+#include "texture/texel_format.h"
+
+#include <cstring>
+
+namespace glfixed::texture {
+
+namespace {
+
+// bytesPerTexel, fitsUnorm8, baseFormat, channels, bytesPerChannel, bits.
+const TexelFormatInfo kInfo[] = {
+    {4, true, GL_RGBA, 4, 1, {8, 8, 8, 8}},                // RGBA8
+    {4, true, GL_RGB, 4, 1, {8, 8, 8, 0}},                 // RGBX8
+    {1, true, GL_LUMINANCE, 1, 1, {8, 0, 0, 0}},           // L8
+    {1, true, GL_ALPHA, 1, 1, {8, 0, 0, 0}},               // A8
+    {1, true, GL_INTENSITY, 1, 1, {8, 0, 0, 0}},           // I8
+    {2, true, GL_LUMINANCE_ALPHA, 2, 1, {8, 8, 0, 0}},     // L8A8
+    {2, true, GL_LUMINANCE_ALPHA, 2, 1, {4, 4, 0, 0}},     // L4A4
+    {4, true, GL_RGBA, 4, 1, {4, 4, 4, 4}},                // RGBA4
+    {4, true, GL_RGB, 4, 1, {4, 4, 4, 0}},                 // RGBX4
+    {4, true, GL_RGB, 4, 1, {5, 5, 5, 0}},                 // RGB5X1
+    {4, true, GL_RGBA, 4, 1, {5, 5, 5, 1}},                // RGB5A1
+    {4, true, GL_RGB, 4, 1, {5, 6, 5, 0}},                 // R5G6B5
+    {4, true, GL_RGB, 4, 1, {3, 3, 2, 0}},                 // R3G3B2
+    {8, false, GL_RGB, 4, 2, {10, 10, 10, 0}},             // RGB10X2
+    {8, false, GL_RGBA, 4, 2, {10, 10, 10, 2}},            // RGB10A2
+    {8, false, GL_RGBA, 4, 2, {16, 16, 16, 16}},           // RGBA16
+    {8, false, GL_RGB, 4, 2, {16, 16, 16, 0}},             // RGBX16
+    {2, false, GL_LUMINANCE, 1, 2, {16, 0, 0, 0}},         // L16
+    {2, false, GL_ALPHA, 1, 2, {16, 0, 0, 0}},             // A16
+    {2, false, GL_INTENSITY, 1, 2, {16, 0, 0, 0}},         // I16
+    {4, false, GL_LUMINANCE_ALPHA, 2, 2, {16, 16, 0, 0}},  // L16A16
+    {2, false, GL_DEPTH_COMPONENT, 1, 2, {16, 0, 0, 0}},   // Z16
+    {4, false, GL_DEPTH_COMPONENT, 1, 4, {24, 0, 0, 0}},   // Z24
+    {4, false, GL_DEPTH_COMPONENT, 1, 4, {32, 0, 0, 0}},   // Z32
+};
+static_assert(sizeof(kInfo) / sizeof(kInfo[0]) == static_cast<size_t>(TexelFormat::Count),
+              "one row per TexelFormat");
+
+// n bits (n <= 8) widened to 8 by repeating the bits, which is exact for
+// every value (v * 255 / (2^n - 1) is an integer for n = 1, 2, 4, 8 and
+// rounds to this for 3, 5, 6).
+uint8_t widenTo8(uint32_t v, int bits) {
+  if (bits >= 8) return static_cast<uint8_t>(v);
+  uint32_t out = 0;
+  for (int shift = 8 - bits; shift > -bits; shift -= bits) out |= shift >= 0 ? v << shift : v >> -shift;
+  return static_cast<uint8_t>(out);
+}
+
+// The base format's mapping of stored channels c[0..] to RGBA (table 3.21).
+template <typename T>
+void expand(GLenum base, const T c[4], T one, T out[4]) {
+  switch (base) {
+    case GL_RGBA: out[0] = c[0], out[1] = c[1], out[2] = c[2], out[3] = c[3]; break;
+    case GL_RGB: out[0] = c[0], out[1] = c[1], out[2] = c[2], out[3] = one; break;
+    case GL_ALPHA: out[0] = out[1] = out[2] = T(0), out[3] = c[0]; break;
+    case GL_LUMINANCE:
+    case GL_DEPTH_COMPONENT: out[0] = out[1] = out[2] = c[0], out[3] = one; break;
+    case GL_LUMINANCE_ALPHA: out[0] = out[1] = out[2] = c[0], out[3] = c[1]; break;
+    case GL_INTENSITY: out[0] = out[1] = out[2] = out[3] = c[0]; break;
+    default: out[0] = out[1] = out[2] = T(0), out[3] = one; break;
+  }
+}
+
+}  // namespace
+
+const TexelFormatInfo& texelFormatInfo(TexelFormat format) { return kInfo[static_cast<size_t>(format)]; }
+
+uint32_t storedChannel(TexelFormat format, const uint8_t* texel, int c) {
+  const TexelFormatInfo& info = texelFormatInfo(format);
+  const uint8_t* p = texel + c * info.bytesPerChannel;
+  switch (info.bytesPerChannel) {
+    case 1: return p[0];
+    case 2: return uint32_t(p[0]) | uint32_t(p[1]) << 8;
+    default: return uint32_t(p[0]) | uint32_t(p[1]) << 8 | uint32_t(p[2]) << 16 | uint32_t(p[3]) << 24;
+  }
+}
+
+ComponentSizes componentSizes(TexelFormat format) {
+  const TexelFormatInfo& info = texelFormatInfo(format);
+  ComponentSizes s;
+  switch (info.baseFormat) {
+    case GL_RGBA: s.alpha = info.bits[3]; [[fallthrough]];
+    case GL_RGB: s.red = info.bits[0], s.green = info.bits[1], s.blue = info.bits[2]; break;
+    case GL_ALPHA: s.alpha = info.bits[0]; break;
+    case GL_LUMINANCE: s.luminance = info.bits[0]; break;
+    case GL_LUMINANCE_ALPHA: s.luminance = info.bits[0], s.alpha = info.bits[1]; break;
+    case GL_INTENSITY: s.intensity = info.bits[0]; break;
+    case GL_DEPTH_COMPONENT: s.depth = info.bits[0]; break;
+  }
+  return s;
+}
+
+void decodeTexelUnorm8(TexelFormat format, const uint8_t* texel, uint8_t rgba[4]) {
+  const TexelFormatInfo& info = texelFormatInfo(format);
+  uint8_t c[4] = {0, 0, 0, 0};
+  for (int i = 0; i < info.channels; ++i)
+    if (info.bits[i]) c[i] = widenTo8(storedChannel(format, texel, i), info.bits[i]);
+  expand<uint8_t>(info.baseFormat, c, 255, rgba);
+}
+
+void decodeTexelFloat(TexelFormat format, const uint8_t* texel, float rgba[4]) {
+  const TexelFormatInfo& info = texelFormatInfo(format);
+  float c[4] = {0, 0, 0, 0};
+  for (int i = 0; i < info.channels; ++i) {
+    if (!info.bits[i]) continue;
+    const uint32_t v = storedChannel(format, texel, i);
+    // unormToFloat's 1 << bits would overflow for 32 bits.
+    c[i] = info.bits[i] == 32 ? static_cast<float>(double(v) / 4294967295.0) : unormToFloat(v, info.bits[i]);
+  }
+  expand<float>(info.baseFormat, c, 1.0f, rgba);
+}
+
+}  // namespace glfixed::texture

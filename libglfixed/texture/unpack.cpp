@@ -1,0 +1,398 @@
+#include "texture/unpack.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+namespace glfixed::texture {
+
+namespace {
+
+int componentsOf(GLenum format) {
+  switch (format) {
+    case GL_COLOR_INDEX:
+    case GL_STENCIL_INDEX:
+    case GL_DEPTH_COMPONENT:
+    case GL_RED:
+    case GL_GREEN:
+    case GL_BLUE:
+    case GL_ALPHA:
+    case GL_LUMINANCE: return 1;
+    case GL_LUMINANCE_ALPHA: return 2;
+    case GL_RGB:
+    case GL_BGR: return 3;
+    case GL_RGBA:
+    case GL_BGRA: return 4;
+    default: return 0;
+  }
+}
+
+// A packed type (table 3.8): its size and the widths of its fields in
+// component order; REV types put the first component in the low bits.
+struct Packed {
+  int bytes = 0;
+  int fields = 0;
+  int width[4] = {0, 0, 0, 0};
+  bool reversed = false;
+};
+Packed packedType(GLenum type) {
+  switch (type) {
+    case GL_UNSIGNED_BYTE_3_3_2: return {1, 3, {3, 3, 2, 0}, false};
+    case GL_UNSIGNED_BYTE_2_3_3_REV: return {1, 3, {3, 3, 2, 0}, true};
+    case GL_UNSIGNED_SHORT_5_6_5: return {2, 3, {5, 6, 5, 0}, false};
+    case GL_UNSIGNED_SHORT_5_6_5_REV: return {2, 3, {5, 6, 5, 0}, true};
+    case GL_UNSIGNED_SHORT_4_4_4_4: return {2, 4, {4, 4, 4, 4}, false};
+    case GL_UNSIGNED_SHORT_4_4_4_4_REV: return {2, 4, {4, 4, 4, 4}, true};
+    case GL_UNSIGNED_SHORT_5_5_5_1: return {2, 4, {5, 5, 5, 1}, false};
+    case GL_UNSIGNED_SHORT_1_5_5_5_REV: return {2, 4, {5, 5, 5, 1}, true};
+    case GL_UNSIGNED_INT_8_8_8_8: return {4, 4, {8, 8, 8, 8}, false};
+    case GL_UNSIGNED_INT_8_8_8_8_REV: return {4, 4, {8, 8, 8, 8}, true};
+    case GL_UNSIGNED_INT_10_10_10_2: return {4, 4, {10, 10, 10, 2}, false};
+    case GL_UNSIGNED_INT_2_10_10_10_REV: return {4, 4, {10, 10, 10, 2}, true};
+    default: return {};
+  }
+}
+
+int elementBytes(GLenum type) {
+  switch (type) {
+    case GL_UNSIGNED_BYTE:
+    case GL_BYTE: return 1;
+    case GL_UNSIGNED_SHORT:
+    case GL_SHORT: return 2;
+    case GL_UNSIGNED_INT:
+    case GL_INT:
+    case GL_FLOAT: return 4;
+    default: return packedType(type).bytes;
+  }
+}
+
+ClientLayout layoutOf(int alignment, int rowLength, int skipPixels, int skipRows, int imageHeight,
+                      int skipImages, bool swap, int width, int height, GLenum format, GLenum type) {
+  ClientLayout l;
+  const size_t rowPixels = static_cast<size_t>(rowLength > 0 ? rowLength : width);
+  const size_t align = static_cast<size_t>(alignment);
+  if (type == GL_BITMAP) {  // §3.6.4: rows of bits, padded to the alignment
+    l.bitmap = true;
+    l.rowStride = (rowPixels + 8 * align - 1) / (8 * align) * align;
+    l.start = static_cast<size_t>(skipPixels) / 8;
+    l.skipBits = skipPixels % 8;
+  } else {
+    const Packed packed = packedType(type);
+    l.elementBytes = elementBytes(type);
+    l.groupBytes = packed.bytes ? packed.bytes : static_cast<size_t>(componentsOf(format)) * l.elementBytes;
+    l.rowStride = rowPixels * l.groupBytes;
+    if (static_cast<size_t>(l.elementBytes) < align) l.rowStride = (l.rowStride + align - 1) / align * align;
+    l.start = static_cast<size_t>(skipPixels) * l.groupBytes;
+    l.swapBytes = swap && l.elementBytes > 1;
+  }
+  l.imageStride = l.rowStride * static_cast<size_t>(imageHeight > 0 ? imageHeight : height);
+  l.start += static_cast<size_t>(skipRows) * l.rowStride + static_cast<size_t>(skipImages) * l.imageStride;
+  return l;
+}
+
+uint32_t readElement(const uint8_t* p, int bytes, bool swap) {
+  uint8_t b[4];
+  for (int i = 0; i < bytes; ++i) b[i] = p[swap ? bytes - 1 - i : i];
+  switch (bytes) {
+    case 1: return b[0];
+    case 2: {
+      uint16_t v;
+      std::memcpy(&v, b, 2);
+      return v;
+    }
+    default: {
+      uint32_t v;
+      std::memcpy(&v, b, 4);
+      return v;
+    }
+  }
+}
+
+// An element of a non-packed type as a float (GL 2.1 table 2.9, with the
+// signed rule of GL 3: max(c / (2^(b-1) - 1), -1), which Mesa uses).
+float elementToFloat(uint32_t bits, GLenum type) {
+  switch (type) {
+    case GL_UNSIGNED_BYTE: return static_cast<float>(bits) * (1.0f / 255.0f);
+    case GL_BYTE: return std::max(static_cast<float>(static_cast<int8_t>(bits)) / 127.0f, -1.0f);
+    case GL_UNSIGNED_SHORT: return static_cast<float>(bits) * (1.0f / 65535.0f);
+    case GL_SHORT: return std::max(static_cast<float>(static_cast<int16_t>(bits)) / 32767.0f, -1.0f);
+    case GL_UNSIGNED_INT: return static_cast<float>(double(bits) / 4294967295.0);
+    case GL_INT: return static_cast<float>(std::max(double(static_cast<int32_t>(bits)) / 2147483647.0, -1.0));
+    case GL_FLOAT: {
+      float f;
+      std::memcpy(&f, &bits, 4);
+      return f;
+    }
+    default: return 0;
+  }
+}
+
+// The components of one group, in the order of `format`.
+void readComponents(const uint8_t* p, GLenum type, int components, bool swap, float c[4]) {
+  const Packed packed = packedType(type);
+  if (packed.bytes) {
+    const uint32_t v = readElement(p, packed.bytes, swap);
+    int used = 0;
+    const int total = packed.bytes * 8;
+    for (int i = 0; i < packed.fields; ++i) {
+      const int w = packed.width[i];
+      const int shift = packed.reversed ? used : total - used - w;
+      used += w;
+      c[i] = static_cast<float>((v >> shift) & ((1u << w) - 1)) / static_cast<float>((1u << w) - 1);
+    }
+    return;
+  }
+  const int bytes = elementBytes(type);
+  for (int i = 0; i < components; ++i) c[i] = elementToFloat(readElement(p + i * bytes, bytes, swap), type);
+}
+
+// §3.6.4 "conversion to RGBA" (luminance to R, G and B).
+void toRGBA(GLenum format, const float c[4], float rgba[4]) {
+  rgba[0] = rgba[1] = rgba[2] = 0;
+  rgba[3] = 1;
+  switch (format) {
+    case GL_RED: rgba[0] = c[0]; break;
+    case GL_GREEN: rgba[1] = c[0]; break;
+    case GL_BLUE: rgba[2] = c[0]; break;
+    case GL_ALPHA: rgba[3] = c[0]; break;
+    case GL_RGB: rgba[0] = c[0], rgba[1] = c[1], rgba[2] = c[2]; break;
+    case GL_BGR: rgba[0] = c[2], rgba[1] = c[1], rgba[2] = c[0]; break;
+    case GL_RGBA: rgba[0] = c[0], rgba[1] = c[1], rgba[2] = c[2], rgba[3] = c[3]; break;
+    case GL_BGRA: rgba[0] = c[2], rgba[1] = c[1], rgba[2] = c[0], rgba[3] = c[3]; break;
+    case GL_LUMINANCE: rgba[0] = rgba[1] = rgba[2] = c[0]; break;
+    case GL_LUMINANCE_ALPHA: rgba[0] = rgba[1] = rgba[2] = c[0], rgba[3] = c[1]; break;
+    case GL_DEPTH_COMPONENT: rgba[0] = c[0]; break;
+    default:  // GL_COLOR_INDEX: through the default one-entry maps (all 0)
+      rgba[3] = 0;
+      break;
+  }
+}
+
+float clamp01(float v) { return v > 0 ? (v < 1 ? v : 1) : 0; }
+
+void writeChannel(uint8_t* p, int bytes, uint32_t v) {
+  for (int i = 0; i < bytes; ++i) p[i] = static_cast<uint8_t>(v >> (8 * i));
+}
+
+// Stored channels from float values; `fromBytes`: the values came from 8-bit
+// unsigned client data, which Mesa widens to more than 8 bits by repeating
+// the bits (probed: 10-bit channels get (b << 2) | (b >> 6)).
+void storeChannels(TexelFormat format, const float c[4], bool fromBytes, uint8_t* texel) {
+  const TexelFormatInfo& info = texelFormatInfo(format);
+  for (int i = 0; i < info.channels; ++i) {
+    const int bits = info.bits[i];
+    uint32_t v = 0;
+    const float f = clamp01(c[i]);
+    if (bits == 0) {
+      v = 0;
+    } else if (fromBytes && bits > 8) {
+      const uint32_t b = static_cast<uint32_t>(std::nearbyint(f * 255.0f));
+      for (int shift = bits - 8; shift > -8; shift -= 8) v |= shift >= 0 ? b << shift : b >> -shift;
+    } else if (bits <= 16) {
+      // Mesa's _mesa_float_to_unorm: round to nearest even, in float.
+      v = static_cast<uint32_t>(std::nearbyint(f * static_cast<float>((1u << bits) - 1)));
+    } else {
+      const double max = bits == 32 ? 4294967295.0 : double((1u << bits) - 1);
+      v = static_cast<uint32_t>(std::nearbyint(double(f) * max));
+    }
+    writeChannel(texel + i * info.bytesPerChannel, info.bytesPerChannel, v);
+  }
+}
+
+// RGBA (or depth in [0]) to the stored channels of a base format.
+void rgbaToChannels(GLenum base, const float rgba[4], float c[4]) {
+  c[0] = c[1] = c[2] = c[3] = 0;
+  switch (base) {
+    case GL_ALPHA: c[0] = rgba[3]; break;
+    case GL_LUMINANCE:
+    case GL_INTENSITY:
+    case GL_DEPTH_COMPONENT: c[0] = rgba[0]; break;
+    case GL_LUMINANCE_ALPHA: c[0] = rgba[0], c[1] = rgba[3]; break;
+    default: c[0] = rgba[0], c[1] = rgba[1], c[2] = rgba[2], c[3] = rgba[3]; break;
+  }
+}
+
+}  // namespace
+
+GLenum checkFormatAndType(GLenum format, GLenum type) {
+  if (componentsOf(format) == 0) return GL_INVALID_ENUM;
+  if (type == GL_BITMAP)
+    return format == GL_COLOR_INDEX || format == GL_STENCIL_INDEX ? GL_NO_ERROR : GL_INVALID_ENUM;
+  if (elementBytes(type) == 0) return GL_INVALID_ENUM;
+  const Packed packed = packedType(type);
+  if (packed.bytes && packed.fields != componentsOf(format)) return GL_INVALID_OPERATION;
+  // The three-field types take GL_RGB only (GL 2.1 table 3.8; Mesa refuses GL_BGR).
+  if (packed.fields == 3 && format != GL_RGB) return GL_INVALID_OPERATION;
+  if (packed.fields == 4 && format != GL_RGBA && format != GL_BGRA) return GL_INVALID_OPERATION;
+  return GL_NO_ERROR;
+}
+
+size_t ClientLayout::extent(int width, int height, int depth) const {
+  if (width <= 0 || height <= 0 || depth <= 0) return 0;
+  const size_t lastRow =
+      bitmap ? (static_cast<size_t>(skipBits) + width + 7) / 8 : static_cast<size_t>(width) * groupBytes;
+  return start + (static_cast<size_t>(depth) - 1) * imageStride +
+         (static_cast<size_t>(height) - 1) * rowStride + lastRow;
+}
+
+ClientLayout unpackLayout(const PixelStoreAttrib& s, int width, int height, GLenum format, GLenum type) {
+  return layoutOf(s.unpackAlignment, s.unpackRowLength, s.unpackSkipPixels, s.unpackSkipRows,
+                  s.unpackImageHeight, s.unpackSkipImages, s.unpackSwapBytes, width, height, format, type);
+}
+
+ClientLayout packLayout(const PixelStoreAttrib& s, int width, int height, GLenum format, GLenum type) {
+  return layoutOf(s.packAlignment, s.packRowLength, s.packSkipPixels, s.packSkipRows, s.packImageHeight,
+                  s.packSkipImages, false, width, height, format, type);
+}
+
+void storeTexel(TexelFormat format, const float rgba[4], uint8_t* texel) {
+  float c[4];
+  rgbaToChannels(texelFormatInfo(format).baseFormat, rgba, c);
+  storeChannels(format, c, false, texel);
+}
+
+void unpackImage(const ClientLayout& layout, const uint8_t* pixels, GLenum format, GLenum type,
+                 const PixelModeAttrib& transfer, int width, int height, int depth, TextureImage& image,
+                 int x, int y, int z) {
+  const TexelFormatInfo& info = texelFormatInfo(image.format);
+  const bool isDepth = format == GL_DEPTH_COMPONENT;
+  const bool scaleBias = isDepth ? (transfer.depthScale != 1 || transfer.depthBias != 0)
+                                 : (transfer.scale != glm::vec4(1) || transfer.bias != glm::vec4(0));
+  const bool fromBytes = !scaleBias && (type == GL_UNSIGNED_BYTE || type == GL_UNSIGNED_INT_8_8_8_8 ||
+                                        type == GL_UNSIGNED_INT_8_8_8_8_REV);
+  const int components = componentsOf(format);
+  for (int k = 0; k < depth; ++k) {
+    for (int j = 0; j < height; ++j) {
+      const uint8_t* row =
+          pixels + layout.start + size_t(k) * layout.imageStride + size_t(j) * layout.rowStride;
+      uint8_t* out = image.texels.data() + size_t(z + k) * image.imageStride +
+                     size_t(y + j) * image.rowStride + size_t(x) * info.bytesPerTexel;
+      for (int i = 0; i < width; ++i, out += info.bytesPerTexel) {
+        float c[4] = {0, 0, 0, 0}, rgba[4];
+        if (!layout.bitmap)
+          readComponents(row + size_t(i) * layout.groupBytes, type, components, layout.swapBytes, c);
+        toRGBA(format, c, rgba);
+        if (scaleBias) {  // §3.6.5: pixel transfer, then the clamp to [0, 1]
+          if (isDepth) {
+            rgba[0] = rgba[0] * transfer.depthScale + transfer.depthBias;
+          } else {
+            for (int n = 0; n < 4; ++n) rgba[n] = rgba[n] * transfer.scale[n] + transfer.bias[n];
+          }
+        }
+        float channels[4];
+        rgbaToChannels(info.baseFormat, rgba, channels);
+        storeChannels(image.format, channels, fromBytes, out);
+      }
+    }
+  }
+}
+
+namespace {
+
+// Table 6.1: the stored components as R, G, B, A for glGetTexImage.
+void texelToRGBA(TexelFormat format, const uint8_t* texel, float rgba[4]) {
+  const TexelFormatInfo& info = texelFormatInfo(format);
+  float c[4] = {0, 0, 0, 0};
+  for (int i = 0; i < info.channels; ++i) {
+    if (!info.bits[i]) continue;
+    const uint32_t v = storedChannel(format, texel, i);
+    c[i] = info.bits[i] == 32 ? static_cast<float>(double(v) / 4294967295.0)
+                              : static_cast<float>(v) / static_cast<float>((1u << info.bits[i]) - 1);
+  }
+  rgba[0] = rgba[1] = rgba[2] = 0;
+  rgba[3] = 1;
+  switch (info.baseFormat) {
+    case GL_ALPHA: rgba[3] = c[0]; break;
+    case GL_LUMINANCE:
+    case GL_INTENSITY:
+    case GL_DEPTH_COMPONENT: rgba[0] = c[0]; break;
+    case GL_LUMINANCE_ALPHA: rgba[0] = c[0], rgba[3] = c[1]; break;
+    case GL_RGB: rgba[0] = c[0], rgba[1] = c[1], rgba[2] = c[2]; break;
+    default: rgba[0] = c[0], rgba[1] = c[1], rgba[2] = c[2], rgba[3] = c[3]; break;
+  }
+}
+
+uint32_t floatToElement(float f, GLenum type) {
+  switch (type) {
+    case GL_UNSIGNED_BYTE: return static_cast<uint32_t>(std::nearbyint(clamp01(f) * 255.0f));
+    case GL_BYTE:
+      return static_cast<uint8_t>(static_cast<int8_t>(std::nearbyint(std::clamp(f, -1.0f, 1.0f) * 127.0f)));
+    case GL_UNSIGNED_SHORT: return static_cast<uint32_t>(std::nearbyint(clamp01(f) * 65535.0f));
+    case GL_SHORT:
+      return static_cast<uint16_t>(
+          static_cast<int16_t>(std::nearbyint(std::clamp(f, -1.0f, 1.0f) * 32767.0f)));
+    case GL_UNSIGNED_INT: return static_cast<uint32_t>(std::nearbyint(double(clamp01(f)) * 4294967295.0));
+    case GL_INT:
+      return static_cast<uint32_t>(
+          static_cast<int32_t>(std::nearbyint(double(std::clamp(f, -1.0f, 1.0f)) * 2147483647.0)));
+    case GL_FLOAT: {
+      uint32_t v;
+      std::memcpy(&v, &f, 4);
+      return v;
+    }
+    default: return 0;
+  }
+}
+
+void writeElement(uint8_t* p, int bytes, uint32_t v) {
+  switch (bytes) {
+    case 1: p[0] = static_cast<uint8_t>(v); break;
+    case 2: {
+      uint16_t s = static_cast<uint16_t>(v);
+      std::memcpy(p, &s, 2);
+      break;
+    }
+    default: std::memcpy(p, &v, 4); break;
+  }
+}
+
+}  // namespace
+
+void packImage(const TextureImage& image, const ClientLayout& layout, GLenum format, GLenum type,
+               uint8_t* pixels) {
+  const int components = componentsOf(format);
+  const Packed packed = packedType(type);
+  const int bytes = elementBytes(type);
+  for (int k = 0; k < image.depth; ++k) {
+    for (int j = 0; j < image.height; ++j) {
+      uint8_t* row = pixels + layout.start + size_t(k) * layout.imageStride + size_t(j) * layout.rowStride;
+      for (int i = 0; i < image.width; ++i) {
+        float rgba[4];
+        texelToRGBA(image.format, image.texel(i, j, k), rgba);
+        float c[4] = {0, 0, 0, 0};
+        switch (format) {
+          case GL_RED:
+          case GL_LUMINANCE:
+          case GL_DEPTH_COMPONENT: c[0] = rgba[0]; break;
+          case GL_GREEN: c[0] = rgba[1]; break;
+          case GL_BLUE: c[0] = rgba[2]; break;
+          case GL_ALPHA: c[0] = rgba[3]; break;
+          case GL_LUMINANCE_ALPHA: c[0] = rgba[0], c[1] = rgba[3]; break;
+          case GL_RGB: c[0] = rgba[0], c[1] = rgba[1], c[2] = rgba[2]; break;
+          case GL_BGR: c[0] = rgba[2], c[1] = rgba[1], c[2] = rgba[0]; break;
+          case GL_RGBA: c[0] = rgba[0], c[1] = rgba[1], c[2] = rgba[2], c[3] = rgba[3]; break;
+          case GL_BGRA: c[0] = rgba[2], c[1] = rgba[1], c[2] = rgba[0], c[3] = rgba[3]; break;
+        }
+        uint8_t* out = row + size_t(i) * layout.groupBytes;
+        if (packed.bytes) {
+          uint32_t v = 0;
+          int used = 0;
+          const int total = packed.bytes * 8;
+          for (int n = 0; n < packed.fields; ++n) {
+            const int w = packed.width[n];
+            const int shift = packed.reversed ? used : total - used - w;
+            used += w;
+            const uint32_t max = (1u << w) - 1;
+            v |= static_cast<uint32_t>(std::nearbyint(clamp01(c[n]) * static_cast<float>(max))) << shift;
+          }
+          writeElement(out, packed.bytes, v);
+        } else {
+          for (int n = 0; n < components; ++n)
+            writeElement(out + n * bytes, bytes, floatToElement(c[n], type));
+        }
+      }
+    }
+  }
+}
+
+}  // namespace glfixed::texture

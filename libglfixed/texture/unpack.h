@@ -1,0 +1,60 @@
+// Client pixels <-> stored texels for the texture commands (GL 2.1 §3.6:
+// unpacking, tables 3.5-3.8; §6.1.4: glGetTexImage packs the other way).
+// A pixel goes through float RGBA, as Mesa's texstore does when the client
+// data is not already in the stored layout; the roundings are Mesa's
+// (probed: reference/MESA_FACTS.md "Textures: storage").
+#pragma once
+
+#include <GL/gl.h>
+
+#include <cstddef>
+#include <cstdint>
+
+#include "state/attrib_groups.h"
+#include "state/attribs.h"
+#include "texture/texture_object.h"
+
+namespace glfixed::texture {
+
+// The error a (format, type) pair of client pixel data gives (GL 2.1
+// §3.6.4; Mesa's _mesa_error_check_format_and_type): GL_INVALID_ENUM for an
+// unknown format or type or GL_BITMAP with a colour format,
+// GL_INVALID_OPERATION for a packed type with a format of another
+// component count; GL_NO_ERROR otherwise.
+GLenum checkFormatAndType(GLenum format, GLenum type);
+
+// Where the pixels of a client image lie (§3.6.4: row length, alignment,
+// skips, image height).
+struct ClientLayout {
+  size_t groupBytes = 0;   // one pixel (0 for GL_BITMAP: bits)
+  size_t rowStride = 0;    // bytes
+  size_t imageStride = 0;  // bytes
+  size_t start = 0;        // byte offset of the first pixel read
+  int elementBytes = 1;    // the size the swap-bytes rule swaps
+  bool swapBytes = false;
+  bool bitmap = false;
+  int skipBits = 0;  // GL_BITMAP: skip pixels within the first byte
+  // Bytes from the start of the client memory to the end of the last pixel
+  // of a width x height x depth image (0 for an empty image).
+  size_t extent(int width, int height, int depth) const;
+};
+ClientLayout unpackLayout(const PixelStoreAttrib& store, int width, int height, GLenum format, GLenum type);
+ClientLayout packLayout(const PixelStoreAttrib& store, int width, int height, GLenum format, GLenum type);
+
+// Unpacks a width x height x depth client image into `image` at (x, y, z),
+// converted to the image's stored format, pixel transfer's scale and bias
+// applied (§3.6.5). `pixels` is at least layout.extent(...) bytes.
+void unpackImage(const ClientLayout& layout, const uint8_t* pixels, GLenum format, GLenum type,
+                 const PixelModeAttrib& transfer, int width, int height, int depth, TextureImage& image,
+                 int x, int y, int z);
+
+// Packs a whole level into client memory (glGetTexImage, §6.1.4): the stored
+// components as R, G, B, A (luminance to R, intensity to R, table 6.1).
+void packImage(const TextureImage& image, const ClientLayout& layout, GLenum format, GLenum type,
+               uint8_t* pixels);
+
+// One texel of `format` from a float RGBA already mapped to the base format
+// (the conversion to the stored precision, Mesa's rounding).
+void storeTexel(TexelFormat format, const float rgba[4], uint8_t* texel);
+
+}  // namespace glfixed::texture

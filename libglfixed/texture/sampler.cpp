@@ -420,8 +420,15 @@ bool makeSamplerView(const TextureObject& texture, GLenum target, float unitLodB
   // every level down to 1x1 or the maximum level, each half the one before,
   // in the base level's format; a cube map's faces square and alike.
   int last = base;
+  // Measured: a maximum level below the base level leaves a non-mipmapped
+  // texture complete (Mesa's base-level completeness), but llvmpipe then
+  // samples (0, 0, 0, 0) (Mesa skips the rest of its checks, and the view it
+  // builds has no level to read); mipmapped, the texture is incomplete.
+  if (p.maxLevel < base) {
+    if (out.mipFilter != GL_NONE) return false;
+    out.samplesZero = true;
+  }
   if (out.mipFilter != GL_NONE) {
-    if (p.maxLevel < base) return false;
     int maxSize = std::max({b.width, out.dims >= 2 ? b.height : 1, out.dims >= 3 ? b.depth : 1});
     int log2 = 0;
     while ((maxSize >> log2) > 1) ++log2;
@@ -471,7 +478,12 @@ bool makeSamplerView(const TextureObject& texture, GLenum target, float unitLodB
 
   // The gallium sampler state Mesa derives (samplerobj.c, st_convert_sampler):
   // min lod at least 0, the unit's bias added to the object's.
-  out.lodBias = p.lodBias + unitLodBias;
+  // Both biases are quantized to 1/256 before they are added
+  // (util_quantize_lod_bias: clamp to [-16, 16], roundf(bias * 256) / 256).
+  auto quantize = [](float bias) {
+    return std::roundf(std::min(std::max(bias, -16.0f), 16.0f) * 256.0f) / 256.0f;
+  };
+  out.lodBias = quantize(p.lodBias) + quantize(unitLodBias);
   out.minLod = std::max(p.minLod, 0.0f);
   out.maxLod = p.maxLod;
   out.needLod = out.mipFilter != GL_NONE || out.minImage != out.magImage;
@@ -489,6 +501,11 @@ bool makeSamplerView(const TextureObject& texture, GLenum target, float unitLodB
 
 void sampleBlock(const SamplerView& v, const Lanes& s, const Lanes& t, const Lanes& r, const Lanes& q,
                  ColorLanes& out) {
+  if (v.samplesZero) {
+    for (int k = 0; k < 4; ++k)
+      for (int i = 0; i < kBlockLanes; ++i) out.c[k][i] = 0.0f;
+    return;
+  }
   // The projective division of the fixed-function shader's TXP: one
   // reciprocal (a division), then products.
   float ps[kBlockLanes], pt[kBlockLanes], pr[kBlockLanes];

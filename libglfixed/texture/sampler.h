@@ -36,6 +36,7 @@ struct SamplerView {
   GLenum wrap[3] = {GL_REPEAT, GL_REPEAT, GL_REPEAT};
   bool border[3] = {};        // the wrap mode of that coordinate reads the border colour
   float borderColor[4] = {};  // clamped to [0, 1], as llvmpipe clamps it for unorm formats
+  bool samplesZero = false;   // complete, yet llvmpipe reads (0, 0, 0, 0) (sampler.cpp)
   bool needLod = false;
   bool minMaxLodEqual = false, applyMinLod = false, applyMaxLod = false;
   float lodBias = 0, minLod = 0, maxLod = 1000;  // the gallium sampler's values

@@ -74,10 +74,12 @@ void decodeTexelUnorm8(TexelFormat format, const uint8_t* texel, uint8_t rgba[4]
 // (unorm n bits: unormToFloat), the base format's mapping applied.
 void decodeTexelFloat(TexelFormat format, const uint8_t* texel, float rgba[4]);
 
-// An n-bit unsigned normalized value as a float, the way llvmpipe's sampler
-// converts it. (Owned by the sampler: its rounding is probed there.)
+// An n-bit unsigned normalized value (n <= 24) as a float, the way llvmpipe's
+// sampler converts it (gallivm lp_build_unsigned_norm_to_float): the integer
+// as a float times the float nearest to 1 / (2^n - 1), that scale computed in
+// double. One rounding, after the product.
 inline float unormToFloat(uint32_t value, int bits) {
-  return static_cast<float>(value) * (1.0f / static_cast<float>((1u << bits) - 1u));
+  return static_cast<float>(value) * static_cast<float>(1.0 / static_cast<double>((1u << bits) - 1u));
 }
 
 }  // namespace glfixed::texture

@@ -133,6 +133,8 @@ bool queryHeldState(Context& ctx, GLenum pname, StateValue& out) {
     case GL_ZOOM_Y: out.set({ctx.pixelMode.zoomY}); return true;
     case GL_ACTIVE_TEXTURE: out.set({double(ctx.texture.activeTexture)}); return true;
     case GL_MAX_TEXTURE_UNITS: out.set({double(kMaxTextureUnits)}); return true;
+    // Issue 14, texture environment: Mesa's limit of GL_TEXTURE_LOD_BIAS (not enforced).
+    case GL_MAX_TEXTURE_LOD_BIAS: out.set({16.0}); return true;
     case GL_SAMPLE_COVERAGE_VALUE: out.set({ctx.multisample.sampleCoverageValue}); return true;
     case GL_SAMPLE_COVERAGE_INVERT: out.set({double(ctx.multisample.sampleCoverageInvert)}); return true;
     default: return false;

@@ -144,6 +144,8 @@ bool queryHeldState(Context& ctx, GLenum pname, StateValue& out) {
     case GL_MAX_TEXTURE_SIZE: out.set({double(texture::kMaxTextureSize)}); return true;
     case GL_MAX_3D_TEXTURE_SIZE: out.set({double(texture::kMax3DTextureSize)}); return true;
     case GL_MAX_CUBE_MAP_TEXTURE_SIZE: out.set({double(texture::kMaxTextureSize)}); return true;
+    // Issue 14, texture environment: Mesa's limit of GL_TEXTURE_LOD_BIAS (not enforced).
+    case GL_MAX_TEXTURE_LOD_BIAS: out.set({16.0}); return true;
     case GL_SAMPLE_COVERAGE_VALUE: out.set({ctx.multisample.sampleCoverageValue}); return true;
     case GL_SAMPLE_COVERAGE_INVERT: out.set({double(ctx.multisample.sampleCoverageInvert)}); return true;
     default: return false;

@@ -19,6 +19,9 @@ constexpr int kMaxTextureEnvUnits = 8;
 struct TexEnvUnit {
   TexEnvAttrib env;
   GLenum baseFormat = GL_RGBA;
+  // For a GL_DEPTH_COMPONENT texture: the base format its GL_DEPTH_TEXTURE_MODE
+  // gives it (GL_LUMINANCE, GL_INTENSITY or GL_ALPHA).
+  GLenum depthTextureMode = GL_LUMINANCE;
 };
 
 // The colours a unit may read: the fragment's primary colour, and the texel

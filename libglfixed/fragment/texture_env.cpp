@@ -122,8 +122,8 @@ struct Inputs {
 
 // Source `source` of the combiner, channel `k`, lane `i`. A crossbar source
 // whose unit is not enabled (undefined in GL) reads 0, as a newer Mesa's
-// ff_fragment_shader has it; Mesa 22.3 gives other colours there, not
-// matched (MESA_FACTS.md).
+// ff_fragment_shader has it; Mesa 22.3 sets only its red to 0 and leaves the
+// rest undefined (MESA_FACTS.md), which is not matched.
 float sourceValue(const Inputs& in, GLenum source, int k, int i) {
   const ColorLanes* lanes = nullptr;
   switch (source) {

@@ -14,6 +14,12 @@ struct TextureStage {
     int unit = 0;
     texture::SamplerView view;
     TexEnvUnit env;
+    // Where the vertices carry no coordinates for the unit
+    // (RasterState::texCoordUnits): Mesa's fixed-function fragment shader
+    // then reads the current texture coordinates as a constant
+    // (ff_fragment_shader.cpp, filter_fp_input_mask: a coordinate varies only
+    // with texgen, a texture matrix, or per-vertex data).
+    float currentCoord[4] = {0, 0, 0, 1};
   };
   int unitCount = 0;
   Unit units[kMaxTextureEnvUnits];

@@ -1,7 +1,9 @@
 #include "pipeline/draw.h"
 
 #include <algorithm>
+#include <optional>
 
+#include "fragment/texture_stage.h"
 #include "primitive/clip.h"
 #include "primitive/primitive.h"
 #include "primitive/select_feedback.h"
@@ -26,6 +28,40 @@ primitive::UserClipPlanes userClipPlanes(const Context& ctx) {
     if (u.enabled & (1u << i))
       u.plane[i] = primitive::transformPlane(ctx.transform.clipPlane[i], eyeFromClip);
   return u;
+}
+
+// Texturing (GL 2.1 §3.8.15): each unit textures with the first of its
+// enabled targets, from the highest priority down (cube map, 3D, 2D, 1D),
+// whose texture is complete; a unit with none does not texture. (Mesa goes on
+// to a lower enabled target when a higher one is incomplete, where GL 2.1
+// disables the unit: texstate.c, update_ff_texture_state.)
+void buildTextureStage(const Context& ctx, fragment::TextureStage& stage) {
+  struct Target {
+    bool TextureUnitEnables::*enabled;
+    GLenum target;
+  };
+  static constexpr Target kPriority[] = {{&TextureUnitEnables::textureCubeMap, GL_TEXTURE_CUBE_MAP},
+                                         {&TextureUnitEnables::texture3D, GL_TEXTURE_3D},
+                                         {&TextureUnitEnables::texture2D, GL_TEXTURE_2D},
+                                         {&TextureUnitEnables::texture1D, GL_TEXTURE_1D}};
+  stage.unitCount = 0;
+  for (int u = 0; u < kMaxTextureUnits; ++u) {
+    for (const Target& target : kPriority) {
+      if (!(ctx.texture.enables[u].*target.enabled)) continue;
+      const texture::TextureObject& object =
+          texture::boundObject(*ctx.textures, ctx.texture.binding[u], texture::targetIndex(target.target));
+      fragment::TextureStage::Unit& unit = stage.units[stage.unitCount];
+      if (!texture::makeSamplerView(object, target.target, ctx.texture.env[u].lodBias, unit.view)) continue;
+      unit.unit = u;
+      unit.env.env = ctx.texture.env[u];
+      const texture::TextureImage& base = object.level(0, unit.view.firstLevel);
+      unit.env.baseFormat = texture::texelFormatInfo(base.format).baseFormat;
+      unit.env.depthTextureMode = object.params.depthTextureMode;
+      for (int j = 0; j < 4; ++j) unit.currentCoord[j] = ctx.current.texCoord[u][j];
+      ++stage.unitCount;
+      break;
+    }
+  }
 }
 
 primitive::PrimitiveState primitiveState(const Context& ctx, GLenum mode, bool separateSpecular) {
@@ -139,6 +175,14 @@ void drawBatch(Context& ctx, const VertexBatch& batch, primitive::PrimitiveState
   if (ctx.renderMode.mode == GL_FEEDBACK)
     return primitive::feedbackPrimitives(ps, shaded, ctx.framebuffer.height(), ctx.current.texCoord[0],
                                          ctx.renderMode.feedback);
+  // Built only when a unit enables a target: the stage is large.
+  std::optional<fragment::TextureStage> textures;
+  for (const TextureUnitEnables& e : ctx.texture.enables)
+    if (e.texture1D || e.texture2D || e.texture3D || e.textureCubeMap) {
+      buildTextureStage(ctx, textures.emplace());
+      ps.raster.textures = &*textures;
+      break;
+    }
   Framebuffer& fb = ctx.framebuffer;
   if (!fb.drawsIntoBoth(ctx.colorBuffer.drawBuffer))
     return primitive::drawPrimitives(ps, shaded, fb);

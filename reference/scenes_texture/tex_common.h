@@ -257,4 +257,72 @@ static inline int tex_checker_floor_scene(int argc, char **argv, GLenum min)
     return scene_end();
 }
 
+/* A lit wavy surface coloured by its height through a 16-texel 1D colour
+ * ramp (texcoord per vertex, GL_CLAMP_TO_EDGE), GL_MODULATE, seen from above
+ * at an angle; `filter` is both the min and the mag filter.
+ * tex_colormap_1d_*. */
+static inline int tex_colormap_scene(int argc, char **argv, GLenum filter)
+{
+    static GLubyte ramp[16 * 4];
+    int i;
+    scene_begin(argc, argv, 160, 160);
+    light_frustum(0.42f, 1.0f, 1.0f, 20.0f);
+    tex_lights();
+    for (i = 0; i < 16; i++)
+        tex_ramp(i / 15.0f, ramp + 4 * i);
+    tex_new(GL_TEXTURE_1D, filter, filter, GL_CLAMP_TO_EDGE);
+    glTexImage1D(GL_TEXTURE_1D, 0, GL_RGB, 16, 0, GL_RGBA, GL_UNSIGNED_BYTE, ramp);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
+    glEnable(GL_TEXTURE_1D);
+    glTranslatef(0.05f, 0.1f, -3.9f);
+    glRotatef(-50.0f, 1.0f, 0.0f, 0.0f);
+    glRotatef(25.0f, 0.0f, 0.0f, 1.0f);
+    tex_wave_mesh(28, 1);
+    return scene_end();
+}
+
+/* Every texture environment mode (columns: GL_REPLACE, GL_MODULATE,
+ * GL_DECAL, GL_BLEND, GL_ADD) on lit shiny spheres, for every base format
+ * (rows: GL_RGB, GL_RGBA, GL_LUMINANCE, GL_ALPHA, GL_INTENSITY,
+ * GL_LUMINANCE_ALPHA), a texture environment colour for GL_BLEND, a diffuse
+ * alpha of 0.8 (the alpha channel is compared too). GL_DECAL is undefined
+ * for the last four formats (GL 2.1 table 3.22): those cells stay
+ * untextured. `control`: GL_LIGHT_MODEL_COLOR_CONTROL. tex_env_modes*. */
+static inline int tex_env_modes_scene(int argc, char **argv, GLenum control)
+{
+    static const GLenum modes[5] = { GL_REPLACE, GL_MODULATE, GL_DECAL, GL_BLEND, GL_ADD };
+    static const GLenum formats[6] = { GL_RGB, GL_RGBA, GL_LUMINANCE, GL_ALPHA, GL_INTENSITY, GL_LUMINANCE_ALPHA };
+    static const GLfloat env_color[4] = { 0.2f, 0.5f, 0.9f, 0.4f };
+    static GLubyte img[8 * 8 * 4];
+    GLuint names[6];
+    int x, y, m, f;
+    scene_begin(argc, argv, 200, 240);
+    for (y = 0; y < 8; y++)
+        for (x = 0; x < 8; x++)
+            tex_put(img + 4 * (y * 8 + x), 255 - 25 * x, 60 + 25 * y, ((x ^ y) & 1) ? 220 : 40, 60 + 25 * ((x + y) % 8));
+    for (f = 0; f < 6; f++) {
+        names[f] = tex_new(GL_TEXTURE_2D, GL_LINEAR, GL_LINEAR, GL_REPEAT);
+        glTexImage2D(GL_TEXTURE_2D, 0, formats[f], 8, 8, 0, GL_RGBA, GL_UNSIGNED_BYTE, img);
+    }
+    tex_lights();
+    glLightModeli(GL_LIGHT_MODEL_COLOR_CONTROL, control);
+    light_mat(GL_FRONT, GL_DIFFUSE, 0.9f, 0.75f, 0.55f, 0.8f);
+    light_mat(GL_FRONT, GL_SPECULAR, 0.8f, 0.8f, 0.8f, 1.0f);
+    glTexEnvfv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, env_color);
+    for (f = 0; f < 6; f++)
+        for (m = 0; m < 5; m++) {
+            light_cell(f * 5 + m, 5, 6, 40, 40);
+            light_ortho(1.05f, 1.0f);
+            glRotatef(20.0f, 1.0f, 0.0f, 0.0f);
+            glBindTexture(GL_TEXTURE_2D, names[f]);
+            glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, modes[m]);
+            if (modes[m] != GL_DECAL || f < 2)
+                glEnable(GL_TEXTURE_2D);
+            tex_sphere(1.0f, 24, 12, 2.0f);
+            glDisable(GL_TEXTURE_2D);
+        }
+    glDeleteTextures(6, names);
+    return scene_end();
+}
+
 #endif

@@ -325,4 +325,27 @@ static inline int tex_env_modes_scene(int argc, char **argv, GLenum control)
     return scene_end();
 }
 
+/* Fills the six faces of the bound cube map with size x size RGBA8 images:
+ * each face its own colour, a checker of 4x4-texel squares, and a lighter
+ * mark in its first texels that shows the face's orientation. */
+static inline void tex_cube_map_faces(int size)
+{
+    static const GLubyte colors[6][3] = { { 230, 80, 70 },  { 80, 200, 90 },  { 90, 110, 230 },
+                                          { 230, 210, 80 }, { 200, 90, 210 }, { 80, 210, 220 } };
+    GLubyte *img = (GLubyte *)malloc((size_t)size * size * 4);
+    int f, x, y;
+    for (f = 0; f < 6; f++) {
+        for (y = 0; y < size; y++)
+            for (x = 0; x < size; x++) {
+                int k = (((x / 4) ^ (y / 4)) & 1) ? 4 : 2;
+                if (x < 3 && y < 2)
+                    k = 5;
+                tex_put(img + 4 * (y * size + x), colors[f][0] * k / 5, colors[f][1] * k / 5, colors[f][2] * k / 5,
+                        255);
+            }
+        glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f, 0, GL_RGBA, size, size, 0, GL_RGBA, GL_UNSIGNED_BYTE, img);
+    }
+    free(img);
+}
+
 #endif

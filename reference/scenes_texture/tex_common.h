@@ -229,31 +229,46 @@ static inline void tex_floor(float x0, float z0, float x1, float z1, float y0, i
 }
 
 /* ---- shared scene bodies ----------------------------------------------- */
+/* The lit checkerboard texture of the floor scenes: 64x64, 8-texel squares. */
+static inline void tex_floor_image(GLubyte img[64 * 64 * 4])
+{
+    static const GLubyte c0[4] = { 235, 230, 215, 255 }, c1[4] = { 150, 40, 35, 255 };
+    tex_checker(img, 64, 64, 8, c0, c1);
+}
+
+/* The receding floor in the viewport (x, y, w, h) with the bound 2D
+ * texture, GL_MODULATE, lit; eye 1 unit above the floor looking a little
+ * down and to the left. */
+static inline void tex_floor_view(int x, int y, int w, int h)
+{
+    glViewport(x, y, w, h);
+    light_frustum(0.5f, (float)w / (float)h, 0.5f, 100.0f);
+    tex_lights();
+    light_fv(GL_LIGHT0, GL_POSITION, -0.3f, 1.0f, 0.4f, 0.0f);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
+    glEnable(GL_TEXTURE_2D);
+    glRotatef(6.0f, 1.0f, 0.0f, 0.0f);
+    glRotatef(-17.0f, 0.0f, 1.0f, 0.0f);
+    tex_floor(-40.0f, -0.3f, 40.0f, -80.0f, -1.0f, 16, 40, 0.5f);
+    glDisable(GL_TEXTURE_2D);
+}
+
 /* A lit checkerboard floor receding to the horizon (strong minification
  * far away, magnification near), GL_MODULATE, min filter `min`; the mipmap
  * filters get every level uploaded by tex_upload_mipmaps. tex_checker_floor_*. */
 static inline int tex_checker_floor_scene(int argc, char **argv, GLenum min)
 {
     static GLubyte img[64 * 64 * 4];
-    static const GLubyte c0[4] = { 235, 230, 215, 255 }, c1[4] = { 150, 40, 35, 255 };
     int mip = min != GL_NEAREST && min != GL_LINEAR;
     GLenum mag = (min == GL_NEAREST || min == GL_NEAREST_MIPMAP_NEAREST) ? GL_NEAREST : GL_LINEAR;
     scene_begin(argc, argv, 160, 120);
-    light_frustum(0.5f, 160.0f / 120.0f, 0.5f, 100.0f);
-    tex_lights();
-    light_fv(GL_LIGHT0, GL_POSITION, -0.3f, 1.0f, 0.4f, 0.0f);
-    tex_checker(img, 64, 64, 8, c0, c1);
+    tex_floor_image(img);
     tex_new(GL_TEXTURE_2D, min, mag, GL_REPEAT);
     if (mip)
         tex_upload_mipmaps(img, 64, 64, GL_RGBA);
     else
         glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 64, 64, 0, GL_RGBA, GL_UNSIGNED_BYTE, img);
-    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
-    glEnable(GL_TEXTURE_2D);
-    /* eye 1 unit above the floor, looking a little down and to the left */
-    glRotatef(6.0f, 1.0f, 0.0f, 0.0f);
-    glRotatef(-17.0f, 0.0f, 1.0f, 0.0f);
-    tex_floor(-40.0f, -0.3f, 40.0f, -80.0f, -1.0f, 16, 40, 0.5f);
+    tex_floor_view(0, 0, 160, 120);
     return scene_end();
 }
 

@@ -11,7 +11,10 @@
  *   - the unsized GL_RGB / GL_RGBA from packed and float data (Mesa may
  *     choose its storage from the data's type);
  *   - glPixelStore unpack state: alignment 1, 2 and 8, row length with
- *     skip pixels and skip rows, swap bytes. */
+ *     skip pixels and skip rows, swap bytes (never with skips: Mesa 22.3.6
+ *     gets that wrong, see MESA_FACTS.md);
+ *   - two uploads from a pixel unpack buffer object (glTexImage2D and
+ *     glTexSubImage2D at an offset into the buffer). */
 #include "tex_common.h"
 
 #define W 5
@@ -104,10 +107,10 @@ typedef struct {
     int alignment, row_length, skip_pixels, skip_rows, swap;
 } unpack;
 
-/* Encodes the logical image as format/type under the unpack state `u`,
- * sets that state, and uploads it as `internal`. Bytes the unpack state
- * skips hold 0xa5. */
-static void upload(GLenum internal, GLenum format, GLenum type, const unpack *u)
+/* Encodes the logical image as format/type under the unpack state `u` and
+ * sets that state; bytes the unpack state skips hold 0xa5. Returns the
+ * bytes (4096 of them, the image from the start). */
+static const unsigned char *encode(GLenum format, GLenum type, const unpack *u)
 {
     static unsigned char mem[4096];
     int idx[4], widths[4], pn = 0, rev = 0, x, y, c;
@@ -162,7 +165,35 @@ static void upload(GLenum internal, GLenum format, GLenum type, const unpack *u)
     glPixelStorei(GL_UNPACK_SKIP_PIXELS, u->skip_pixels);
     glPixelStorei(GL_UNPACK_SKIP_ROWS, u->skip_rows);
     glPixelStorei(GL_UNPACK_SWAP_BYTES, u->swap);
-    glTexImage2D(GL_TEXTURE_2D, 0, (GLint)internal, W, H, 0, format, type, mem);
+    return mem;
+}
+
+/* Encodes and uploads as `internal`, from client memory. */
+static void upload(GLenum internal, GLenum format, GLenum type, const unpack *u)
+{
+    glTexImage2D(GL_TEXTURE_2D, 0, (GLint)internal, W, H, 0, format, type, encode(format, type, u));
+}
+
+/* The same through a pixel unpack buffer object: the data at byte 64 of
+ * the buffer; `sub`: an empty glTexImage2D, then glTexSubImage2D from the
+ * buffer. */
+static void upload_pbo(GLenum internal, GLenum format, GLenum type, const unpack *u, int sub)
+{
+    static unsigned char data[64 + 4096];
+    GLuint buffer;
+    memset(data, 0x5a, 64);
+    memcpy(data + 64, encode(format, type, u), 4096);
+    glGenBuffers(1, &buffer);
+    glBindBuffer(GL_PIXEL_UNPACK_BUFFER, buffer);
+    glBufferData(GL_PIXEL_UNPACK_BUFFER, sizeof data, data, GL_STATIC_DRAW);
+    if (sub) {
+        glTexImage2D(GL_TEXTURE_2D, 0, (GLint)internal, W, H, 0, format, type, NULL);
+        glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, W, H, format, type, (const void *)(size_t)64);
+    } else {
+        glTexImage2D(GL_TEXTURE_2D, 0, (GLint)internal, W, H, 0, format, type, (const void *)(size_t)64);
+    }
+    glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+    glDeleteBuffers(1, &buffer);
 }
 
 typedef struct {
@@ -243,9 +274,17 @@ static const upload_case cases[] = {
     { GL_RGBA8, GL_RGBA, GL_FLOAT, { 4, 7, 0, 0, 1 } },
 };
 
+/* The last two cells: uploads from a pixel unpack buffer (GL_RGB5_A1 from
+ * GL_BGRA / GL_UNSIGNED_SHORT_1_5_5_5_REV with row length and skips;
+ * GL_RGBA8 by glTexSubImage2D from GL_RGBA / GL_FLOAT). */
+static const upload_case pbo_cases[2] = {
+    { GL_RGB5_A1, GL_BGRA, GL_UNSIGNED_SHORT_1_5_5_5_REV, { 4, 7, 1, 2, 0 } },
+    { GL_RGBA8, GL_RGBA, GL_FLOAT, PLAIN },
+};
+
 int main(int argc, char **argv)
 {
-    const int n = (int)(sizeof cases / sizeof cases[0]), cols = 10, cell = 24;
+    const int n = (int)(sizeof cases / sizeof cases[0]) + 2, cols = 10, cell = 24;
     const int rows = (n + cols - 1) / cols;
     GLuint name;
     int i;
@@ -256,10 +295,13 @@ int main(int argc, char **argv)
     /* the fragment colour shows through GL_ALPHA textures' colour */
     glColor4f(0.55f, 0.45f, 0.35f, 1.0f);
     for (i = 0; i < n; i++) {
-        const upload_case *k = &cases[i];
+        const upload_case *k = i < n - 2 ? &cases[i] : &pbo_cases[i - (n - 2)];
         float x0 = (float)(i % cols * cell + 2), y0 = (float)((rows - 1 - i / cols) * cell + 4);
         name = tex_new(GL_TEXTURE_2D, GL_NEAREST, GL_NEAREST, GL_CLAMP_TO_EDGE);
-        upload(k->internal, k->format, k->type, &k->u);
+        if (i < n - 2)
+            upload(k->internal, k->format, k->type, &k->u);
+        else
+            upload_pbo(k->internal, k->format, k->type, &k->u, i == n - 1);
         glBegin(GL_QUADS);
         glTexCoord2f(0.0f, 0.0f); glVertex2f(x0, y0);
         glTexCoord2f(1.0f, 0.0f); glVertex2f(x0 + 4 * W, y0);

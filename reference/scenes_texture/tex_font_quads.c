@@ -114,11 +114,11 @@ int main(int argc, char **argv)
     light_frustum(0.3f, 256.0f / 80.0f, 1.0f, 20.0f);
     tex_lights();
     light_mat(GL_FRONT, GL_DIFFUSE, 0.9f, 0.8f, 0.5f, 1.0f);
-    glTranslatef(0.0f, 0.0f, -4.0f);
-    glRotatef(-40.0f, 0.0f, 1.0f, 0.0f);
+    glTranslatef(0.2f, 0.0f, -4.5f);
+    glRotatef(-25.0f, 0.0f, 1.0f, 0.0f);
     glNormal3f(0.0f, 0.0f, 1.0f);
-    text("LIT PANEL 42", -3.0f, -0.55f, 0.5f, 0.5f, 0.0f);
-    text("SO FAR, SO GOOD", -3.0f, 0.05f, 0.4f, 0.4f, 0.0f);
+    text("LIT PANEL 42", -2.4f, -0.5f, 0.4f, 0.4f, 0.0f);
+    text("SO FAR, SO GOOD", -2.4f, 0.0f, 0.32f, 0.32f, 0.0f);
     glDeleteTextures(3, names);
     return scene_end();
 }

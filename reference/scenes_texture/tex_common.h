@@ -11,8 +11,8 @@
 #include <string.h>
 
 /* ---- textures ---------------------------------------------------------- */
-/* A new 2D texture object bound to unit `current`, with its filters and a
- * wrap mode for s and t. */
+/* A new texture object of `target`, bound on the active unit, with its
+ * filters and one wrap mode for every coordinate the target has. */
 static inline GLuint tex_new(GLenum target, GLenum min, GLenum mag, GLenum wrap)
 {
     GLuint name = 0;

@@ -1,9 +1,12 @@
 /* Benchmark: a legacy program drawing lit smooth spheres in immediate mode
  * (about 20k triangles a frame, 512x512, depth tested, 2 lights), the same
  * spheres compiled once into a display list and replayed ("list"), the same
- * vertices in one buffer object drawn with glMultiDrawArrays ("vbo"), and
- * full-screen lit quads for fill. Built against Mesa's headers; run on Mesa
- * and on the drop-in by bench/run_bench.sh. Prints ms per frame. */
+ * vertices in one buffer object drawn with glMultiDrawArrays ("vbo"),
+ * full-screen lit quads for fill ("fill"), and the same quads under a
+ * trilinear (GL_LINEAR_MIPMAP_LINEAR) GL_MODULATE texture ("texfill"; 1.5
+ * texels a pixel, so every pixel blends two levels). Built against Mesa's
+ * headers; run on Mesa and on the drop-in by bench/run_bench.sh. Prints ms
+ * per frame. */
 #define GL_GLEXT_PROTOTYPES 1
 #include <GL/gl.h>
 #include <GL/glext.h>
@@ -105,17 +108,58 @@ int main(int argc, char **argv) {
         glBufferData(GL_ARRAY_BUFFER, (GLsizeiptr)(n * 6 * sizeof(float)), data, GL_STATIC_DRAW);
         glInterleavedArrays(GL_N3F_V3F, 0, (const void *)0);
     }
+    const int texfill = strcmp(what, "texfill") == 0;
+    if (texfill) {  /* uploaded before the timing: a 256x256 checker, every level by glTexImage2D */
+        static unsigned char img[2][256 * 256 * 4];
+        for (int y = 0; y < 256; y++)
+            for (int x = 0; x < 256; x++) {
+                unsigned char *p = img[0] + 4 * (y * 256 + x);
+                int on = ((x / 16) ^ (y / 16)) & 1;
+                p[0] = (unsigned char)(on ? 230 : 60 + x / 4);
+                p[1] = (unsigned char)(on ? 220 : 90 + y / 4);
+                p[2] = (unsigned char)(on ? 200 : 150);
+                p[3] = 255;
+            }
+        GLuint tex;
+        glGenTextures(1, &tex);
+        glBindTexture(GL_TEXTURE_2D, tex);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        int size = 256, cur = 0;
+        for (int level = 0;; level++) {
+            glTexImage2D(GL_TEXTURE_2D, level, GL_RGBA, size, size, 0, GL_RGBA, GL_UNSIGNED_BYTE, img[cur]);
+            if (size == 1) break;
+            const int half = size / 2;  /* 2x2 box filter into the other buffer */
+            for (int y = 0; y < half; y++)
+                for (int x = 0; x < half; x++)
+                    for (int c = 0; c < 4; c++) {
+                        const unsigned char *q = img[cur] + 4 * (2 * y * size + 2 * x) + c;
+                        img[!cur][4 * (y * half + x) + c] =
+                            (unsigned char)((q[0] + q[4] + q[4 * size] + q[4 * size + 4] + 2) / 4);
+                    }
+            size = half;
+            cur = !cur;
+        }
+        glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
+        glEnable(GL_TEXTURE_2D);
+    }
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     glFinish();
     double t1 = now();
     for (int f = 0; f < frames; f++) {
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-        if (strcmp(what, "fill") == 0) {
+        if (strcmp(what, "fill") == 0 || texfill) {
             for (int q = 0; q < 8; q++) {  /* 8 full-screen lit quads, back to front */
+                /* texfill: s and t run over 3 texture widths across the 512 pixels (the
+                 * window is 6 - z units wide at the quad's depth), shifted per quad */
+                const float z = 1 - q * 0.1f, k = 3.0f / (6 - z), o = 0.37f * q;
+                const float xy[4][2] = {{-3, -3}, {3, -3}, {3, 3}, {-3, 3}};
                 glNormal3f(0, 0, 1);
                 glBegin(GL_QUADS);
-                glVertex3f(-3, -3, 1 - q * 0.1f); glVertex3f(3, -3, 1 - q * 0.1f);
-                glVertex3f(3, 3, 1 - q * 0.1f); glVertex3f(-3, 3, 1 - q * 0.1f);
+                for (int v = 0; v < 4; v++) {
+                    if (texfill) glTexCoord2f(o + k * xy[v][0], o + k * xy[v][1]);
+                    glVertex3f(xy[v][0], xy[v][1], z);
+                }
                 glEnd();
             }
         } else if (list) {

@@ -8,7 +8,9 @@ build="${1:-build}"
 frames="${2:-20}"
 exe="$build/bench/bench_lit_spheres"
 declare -A ms
-for what in geometry list vbo fill; do
+# texfill: the fill quads under a trilinear (GL_LINEAR_MIPMAP_LINEAR) texture
+# (issue 14); its ratio means something only once libglfixed textures.
+for what in geometry list vbo fill texfill; do
   mesa=$(env -u LD_LIBRARY_PATH "$exe" "$frames" "$what")
   ours=$(LD_LIBRARY_PATH="$build/dropin" "$exe" "$frames" "$what")
   echo "Mesa       $mesa"

@@ -380,6 +380,9 @@ inline CubeCoord cubeFace(float s, float t, float r) {
   return c;
 }
 
+// A lane's coordinate after the projective division.
+inline float cs(const Lanes& c, const Lanes& q, int lane) { return c[lane] * (1.0f / q[lane]); }
+
 GLenum imageFilter(GLenum filter) {
   return filter == GL_LINEAR || filter == GL_LINEAR_MIPMAP_NEAREST || filter == GL_LINEAR_MIPMAP_LINEAR
              ? GL_LINEAR
@@ -458,6 +461,8 @@ bool makeSamplerView(const TextureObject& texture, GLenum target, float unitLodB
   out.lastLevel = last;
 
   out.wrap[0] = p.wrapS, out.wrap[1] = p.wrapT, out.wrap[2] = p.wrapR;
+  // llvmpipe ignores a cube map's wrap modes: s and t clamp to the edge.
+  if (out.cube) out.wrap[0] = out.wrap[1] = GL_CLAMP_TO_EDGE;
   bool anyLinear = out.minImage == GL_LINEAR || out.magImage == GL_LINEAR;
   for (int k = 0; k < 3; ++k)
     out.border[k] = out.wrap[k] == GL_CLAMP_TO_BORDER || (out.wrap[k] == GL_CLAMP && anyLinear);
@@ -494,8 +499,12 @@ bool makeSamplerView(const TextureObject& texture, GLenum target, float unitLodB
   }
 
   auto simple = [](GLenum w) { return w == GL_REPEAT || w == GL_CLAMP_TO_EDGE; };
+  // A per-pixel lod (cube maps with a mip filter) keeps the AoS path only
+  // with equal min and mag filters.
+  bool perPixelLod = out.cube && out.mipFilter != GL_NONE;
   out.unorm8 = info.fitsUnorm8 && p.compareMode == GL_NONE && simple(out.wrap[0]) &&
-               (out.dims < 2 || simple(out.wrap[1])) && (out.dims < 3 || simple(out.wrap[2]));
+               !(perPixelLod && out.minImage != out.magImage) && (out.dims < 2 || simple(out.wrap[1])) &&
+               (out.dims < 3 || simple(out.wrap[2]));
   return true;
 }
 
@@ -515,7 +524,9 @@ void sampleBlock(const SamplerView& v, const Lanes& s, const Lanes& t, const Lan
     pt[i] = t[i] * rcp;
     pr[i] = r[i] * rcp;
   }
-  QuadLod lod[2];
+  // The level of detail of each lane: per quad, except cube maps with a mip
+  // filter, where llvmpipe takes it per pixel.
+  QuadLod lod[kBlockLanes];
   int faces[kBlockLanes] = {};
   if (v.cube) {
     CubeCoord cc[kBlockLanes];
@@ -526,22 +537,23 @@ void sampleBlock(const SamplerView& v, const Lanes& s, const Lanes& t, const Lan
       ps[i] = cc[i].sc * ima + 0.5f;
       pt[i] = cc[i].tc * ima + 0.5f;
     }
-    for (int qd = 0; qd < 2; ++qd) {
+    bool perLane = v.mipFilter != GL_NONE;
+    for (int i = 0; i < kBlockLanes; ++i) {
       if (!v.needLod || v.minMaxLodEqual) {
-        lod[qd] = quadLod(v, nullptr, nullptr, nullptr);
+        lod[i] = quadLod(v, nullptr, nullptr, nullptr);
         continue;
       }
-      // The derivatives of the quad's top-left lane, carried onto its face:
-      // d(sc / ma) = (dsc - dma * sc / ma) / ma (then times one half).
-      const float* s0 = s.v + qd * 4;
-      float cs[4], ct[4], cr[4];
-      for (int k = 0; k < 4; ++k) {
-        float rcp = 1.0f / q[qd * 4 + k];
-        cs[k] = s0[k] * rcp, ct[k] = t[qd * 4 + k] * rcp, cr[k] = r[qd * 4 + k] * rcp;
+      if (!perLane && (i & 3)) {  // per quad: the top-left lane's
+        lod[i] = lod[i & ~3];
+        continue;
       }
-      const CubeCoord& c = cc[qd * 4];
-      float ddx[3] = {cs[1] - cs[0], ct[1] - ct[0], cr[1] - cr[0]};
-      float ddy[3] = {cs[2] - cs[0], ct[2] - ct[0], cr[2] - cr[0]};
+      // lp_build_ddx / ddy: the difference along the lane's row / column of
+      // its quad, carried onto the lane's face: (dsc - dma * (1 / ma) * sc) * (0.5 / ma).
+      int base = i & ~3, k = i & 3;
+      int x0 = base + (k & 2), x1 = x0 + 1, y0 = base + (k & 1), y1 = y0 + 2;
+      float ddx[3] = {cs(s, q, x1) - cs(s, q, x0), cs(t, q, x1) - cs(t, q, x0), cs(r, q, x1) - cs(r, q, x0)};
+      float ddy[3] = {cs(s, q, y1) - cs(s, q, y0), cs(t, q, y1) - cs(t, q, y0), cs(r, q, y1) - cs(r, q, y0)};
+      const CubeCoord& c = cc[i];
       float ima = 1.0f / c.ma, imahalf = 0.5f * ima;
       bool neg = std::signbit(c.ma);
       auto flip = [](float x, bool f) { return f ? -x : x; };
@@ -562,23 +574,26 @@ void sampleBlock(const SamplerView& v, const Lanes& s, const Lanes& t, const Lan
       fd.tdx = (tdx - madx * c.tc) * imahalf;
       fd.sdy = (sdy - mady * c.sc) * imahalf;
       fd.tdy = (tdy - mady * c.tc) * imahalf;
-      lod[qd] = quadLod(v, nullptr, nullptr, nullptr, &fd);
+      lod[i] = quadLod(v, nullptr, nullptr, nullptr, &fd);
     }
   } else {
-    lod[0] = quadLod(v, ps, pt, pr);
-    lod[1] = quadLod(v, ps + 4, pt + 4, pr + 4);
+    QuadLod q0 = quadLod(v, ps, pt, pr), q1 = quadLod(v, ps + 4, pt + 4, pr + 4);
+    for (int i = 0; i < kBlockLanes; ++i) lod[i] = i < 4 ? q0 : q1;
   }
+  bool anyFraction = false;
+  for (int i = 0; i < kBlockLanes; ++i) anyFraction |= lod[i].fpart > 0;
 
   if (v.unorm8) {
     // AoS: with different min and mag filters llvmpipe samples each quad
-    // on its own (4 lanes), so each quad takes its own filter.
+    // on its own (4 lanes), so each quad takes its own filter (and the mip
+    // lerp runs when any lane of the block has a fraction).
     for (int i = 0; i < kBlockLanes; ++i) {
-      const QuadLod& ql = lod[i >> 2];
+      const QuadLod& ql = lod[i];
       bool useMin = v.minImage == v.magImage || ql.minified;
       GLenum filter = useMin ? v.minImage : v.magImage;
       int c0[4];
       sampleAos(v, v.levels[ql.level0], faces[i], filter, ps[i], pt[i], pr[i], c0);
-      if (useMin && v.mipFilter == GL_LINEAR && (lod[0].fpart > 0 || lod[1].fpart > 0)) {
+      if (useMin && v.mipFilter == GL_LINEAR && anyFraction) {
         int c1[4];
         sampleAos(v, v.levels[ql.level1], faces[i], filter, ps[i], pt[i], pr[i], c1);
         int w = toInt(ql.fpart * 256.0f);
@@ -590,18 +605,16 @@ void sampleBlock(const SamplerView& v, const Lanes& s, const Lanes& t, const Lan
   }
 
   // SoA: the block at once. With different min and mag filters, if any
-  // quad wants linear, every lane samples linearly with the min mip filter
+  // lane wants linear, every lane samples linearly with the min mip filter
   // and the nearest lanes snap their weights (lp_build_sample_mipmap_both).
   bool combined = false, allNearestMip = v.mipFilter != GL_NONE;
   if (v.minImage != v.magImage) {
-    for (int qd = 0; qd < 2; ++qd) {
-      bool linear = v.minImage == GL_LINEAR ? lod[qd].minified : !lod[qd].minified;
-      combined |= linear;
-    }
+    for (int i = 0; i < kBlockLanes; ++i)
+      combined |= v.minImage == GL_LINEAR ? lod[i].minified : !lod[i].minified;
     if (!combined && v.minImage == GL_LINEAR) allNearestMip = false;  // every lane magnified
   }
   for (int i = 0; i < kBlockLanes; ++i) {
-    const QuadLod& ql = lod[i >> 2];
+    const QuadLod& ql = lod[i];
     GLenum filter;
     bool snap = false, mip = v.mipFilter != GL_NONE;
     if (v.minImage == v.magImage) {
@@ -615,7 +628,7 @@ void sampleBlock(const SamplerView& v, const Lanes& s, const Lanes& t, const Lan
     }
     float c0[4];
     sampleSoa(v, v.levels[ql.level0], faces[i], filter, snap, ps[i], pt[i], pr[i], c0);
-    if (mip && v.mipFilter == GL_LINEAR && (lod[0].fpart > 0 || lod[1].fpart > 0)) {
+    if (mip && v.mipFilter == GL_LINEAR && anyFraction) {
       float c1[4];
       sampleSoa(v, v.levels[ql.level1], faces[i], filter, snap, ps[i], pt[i], pr[i], c1);
       for (int k = 0; k < 4; ++k) c0[k] = lerpF(ql.fpart, c0[k], c1[k]);

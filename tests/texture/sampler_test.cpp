@@ -384,7 +384,7 @@ TEST(SamplerMesa, ThreeDimensional) {
   RecordProperty("pixels", pixels);
 }
 
-TEST(SamplerMesa, DISABLED_CubeMapFaces) {
+TEST(SamplerMesa, CubeMapFaces) {
   // Directions sweeping across faces: s and t vary, r fixed per case.
   const Affine dirs[][3] = {
       {{-1.5f, 3.0f / 64, 0}, {-1.25f, 0, 2.5f / 64}, {1.0f, 0, 0}},

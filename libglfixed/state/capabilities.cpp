@@ -130,15 +130,18 @@ constexpr Capability kTable[] = {
           GL_MULTISAMPLE_BIT, 0, kHeld),
     entry(GL_SAMPLE_COVERAGE, field<&Context::multisample, &MultisampleAttrib::sampleCoverage>,
           GL_MULTISAMPLE_BIT, 0, kHeld),
-    entry(GL_TEXTURE_1D, textureUnit<&TextureUnitEnables::texture1D>, GL_TEXTURE_BIT, 0, kHeld, true),
-    entry(GL_TEXTURE_2D, textureUnit<&TextureUnitEnables::texture2D>, GL_TEXTURE_BIT, 0, kHeld, true),
-    entry(GL_TEXTURE_3D, textureUnit<&TextureUnitEnables::texture3D>, GL_TEXTURE_BIT, 0, kHeld, true),
-    entry(GL_TEXTURE_CUBE_MAP, textureUnit<&TextureUnitEnables::textureCubeMap>, GL_TEXTURE_BIT, 0, kHeld,
+    // Texture coordinates (issue 14): an enabled target makes the vertex
+    // stage output the unit's coordinates (vertex/texcoord.h); texgen is
+    // computed there. Sampling them is the texture stage's.
+    entry(GL_TEXTURE_1D, textureUnit<&TextureUnitEnables::texture1D>, GL_TEXTURE_BIT, 0, kSettable, true),
+    entry(GL_TEXTURE_2D, textureUnit<&TextureUnitEnables::texture2D>, GL_TEXTURE_BIT, 0, kSettable, true),
+    entry(GL_TEXTURE_3D, textureUnit<&TextureUnitEnables::texture3D>, GL_TEXTURE_BIT, 0, kSettable, true),
+    entry(GL_TEXTURE_CUBE_MAP, textureUnit<&TextureUnitEnables::textureCubeMap>, GL_TEXTURE_BIT, 0, kSettable,
           true),
-    entry(GL_TEXTURE_GEN_S, textureUnit<&TextureUnitEnables::genS>, GL_TEXTURE_BIT, 0, kHeld, true),
-    entry(GL_TEXTURE_GEN_T, textureUnit<&TextureUnitEnables::genT>, GL_TEXTURE_BIT, 0, kHeld, true),
-    entry(GL_TEXTURE_GEN_R, textureUnit<&TextureUnitEnables::genR>, GL_TEXTURE_BIT, 0, kHeld, true),
-    entry(GL_TEXTURE_GEN_Q, textureUnit<&TextureUnitEnables::genQ>, GL_TEXTURE_BIT, 0, kHeld, true),
+    entry(GL_TEXTURE_GEN_S, textureUnit<&TextureUnitEnables::genS>, GL_TEXTURE_BIT, 0, kSettable, true),
+    entry(GL_TEXTURE_GEN_T, textureUnit<&TextureUnitEnables::genT>, GL_TEXTURE_BIT, 0, kSettable, true),
+    entry(GL_TEXTURE_GEN_R, textureUnit<&TextureUnitEnables::genR>, GL_TEXTURE_BIT, 0, kSettable, true),
+    entry(GL_TEXTURE_GEN_Q, textureUnit<&TextureUnitEnables::genQ>, GL_TEXTURE_BIT, 0, kSettable, true),
 };
 // kCapabilityCount (capabilities.h) sizes EnableAttrib: it must be the table's size.
 static_assert(std::size(kTable) == kCapabilityCount, "kCapabilityCount must count kTable's entries");

@@ -11,6 +11,7 @@
 #include "api/eval_commands.h"
 #include "texture/texture_object.h"
 #include "vertex/lighting_queries.h"
+#include "vertex/texcoord.h"  // texture coordinates (issue 14)
 
 using namespace glfixed;
 
@@ -211,7 +212,7 @@ bool queryCoreState(Context& ctx, GLenum pname, StateValue& out) {
       return true;
     }
     case GL_CURRENT_TEXTURE_COORDS: {
-      const glm::vec4& t = ctx.current.texCoord[0];
+      const glm::vec4& t = ctx.current.texCoord[ctx.texture.activeUnit()];  // of the active unit (table 6.5)
       out.set({t.x, t.y, t.z, t.w});
       return true;
     }
@@ -286,7 +287,7 @@ bool queryCoreState(Context& ctx, GLenum pname, StateValue& out) {
       return true;
     }
     case GL_CURRENT_RASTER_TEXTURE_COORDS: {
-      const glm::vec4& t = ctx.rasterPos.texCoord;
+      const glm::vec4& t = ctx.rasterPos.unitTexCoord[ctx.texture.activeUnit()];  // the active unit's (issue 14)
       out.set({t.x, t.y, t.z, t.w});
       return true;
     }
@@ -342,6 +343,7 @@ const Answer kAnswers[] = {
     queryStage<getVertexArrayState>,       // state/vertex_array_queries.h
     queryStage<api::getEvalState>,         // api/eval_commands.h
     queryLighting,                         // vertex/lighting_queries.h
+    queryStage<vertex::getTexCoordState>,  // texture coordinates (issue 14): vertex/texcoord.h
 };
 
 bool queryState(Context& ctx, GLenum pname, StateValue& out) {

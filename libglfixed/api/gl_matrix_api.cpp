@@ -9,17 +9,27 @@ using namespace glfixed;
 
 namespace {
 
+// The derived state a change of the current matrix invalidates (the texture
+// matrices are read at each draw: nothing is derived from them).
+uint32_t currentMatrixDirty(const Context& ctx) {
+  switch (ctx.transform.matrixMode) {
+    case GL_PROJECTION: return kDirtyProjection;
+    case GL_TEXTURE: return 0;
+    default: return kDirtyModelview;
+  }
+}
+
 void multiplyCurrent(Context& ctx, const glm::mat4& m) {
   MatrixStack& stack = ctx.currentMatrixStack();
   stack.top() = stack.top() * m;
   stack.markChanged();
-  ctx.markDirty(ctx.transform.matrixMode == GL_PROJECTION ? kDirtyProjection : kDirtyModelview);
+  ctx.markDirty(currentMatrixDirty(ctx));
 }
 
 void loadCurrent(Context& ctx, const glm::mat4& m) {
   ctx.currentMatrixStack().top() = m;
   ctx.currentMatrixStack().markChanged();
-  ctx.markDirty(ctx.transform.matrixMode == GL_PROJECTION ? kDirtyProjection : kDirtyModelview);
+  ctx.markDirty(currentMatrixDirty(ctx));
 }
 
 glm::mat4 fromDoubles(const double d[16]) {
@@ -105,8 +115,8 @@ GLAPI void APIENTRY glMatrixMode(GLenum mode) {
   if (api::compiled(&glMatrixMode, mode)) return;
   Context* ctx = api::contextForSetter();
   if (!ctx) return;
-  if (mode != GL_MODELVIEW && mode != GL_PROJECTION) {
-    // GL_TEXTURE and GL_COLOR need texturing and imaging, not implemented yet.
+  if (mode != GL_MODELVIEW && mode != GL_PROJECTION && mode != GL_TEXTURE) {
+    // GL_COLOR needs the imaging subset, not implemented.
     ctx->recordError(GL_INVALID_ENUM);
     return;
   }
@@ -187,7 +197,7 @@ GLAPI void APIENTRY glPopMatrix(void) {
     ctx->recordError(GL_STACK_UNDERFLOW);
     return;
   }
-  ctx->markDirty(ctx->transform.matrixMode == GL_PROJECTION ? kDirtyProjection : kDirtyModelview);
+  ctx->markDirty(currentMatrixDirty(*ctx));
 }
 
 GLAPI void APIENTRY glRotatef(GLfloat angle, GLfloat x, GLfloat y, GLfloat z) {

@@ -9,8 +9,32 @@
 
 #include "api/api.h"
 #include "api/list_record.h"
+#include "api/point_sprite_env.h"
 
 using namespace glfixed;
+
+// Point sprites (issue 14): GL_COORD_REPLACE through glTexEnv (point_sprite_env.h).
+bool api::setPointSpriteEnv(Context& ctx, GLenum pname, GLint value) {
+  if (pname != GL_COORD_REPLACE) {
+    ctx.recordError(GL_INVALID_ENUM);
+    return false;
+  }
+  if (value != GL_TRUE && value != GL_FALSE) {
+    ctx.recordError(GL_INVALID_VALUE);
+    return false;
+  }
+  api::setState(ctx, ctx.point.coordReplace[ctx.texture.activeUnit()], value == GL_TRUE, GL_POINT_BIT);
+  return true;
+}
+
+bool api::getPointSpriteEnv(Context& ctx, GLenum pname, GLint* value) {
+  if (pname != GL_COORD_REPLACE) {
+    ctx.recordError(GL_INVALID_ENUM);
+    return false;
+  }
+  if (value) *value = ctx.point.coordReplace[ctx.texture.activeUnit()] ? GL_TRUE : GL_FALSE;
+  return true;
+}
 
 namespace {
 

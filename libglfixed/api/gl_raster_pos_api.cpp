@@ -13,6 +13,7 @@
 #include "api/api.h"
 #include "api/list_record.h"
 #include "state/lighting_attrib.h"
+#include "vertex/lighting_matrix.h"
 #include "vertex/vertex_stage.h"
 
 using namespace glfixed;
@@ -29,6 +30,61 @@ glm::vec4 transformPoint(const glm::mat4& m, const glm::vec4& p) {
     q[r] = s + m[3][r] * p[3];
   }
   return q;
+}
+
+// Texture coordinates (issue 14): rastpos.c computes every unit's in C, for
+// every unit whatever its texture enables: texgen where a coordinate's
+// generation is on (compute_texgen, the sphere-map terms always), then the
+// texture matrix (TRANSFORM_POINT), whether or not it is the identity. The
+// normal is the current one, through the inverse modelview (TRANSFORM_NORMAL)
+// only when Mesa works in eye coordinates (_NeedEyeCoords), and never
+// normalised or rescaled (measured: GL_NORMALIZE and GL_RESCALE_NORMAL change
+// nothing; feedback_texcoords).
+void rasterTexCoords(const Context& ctx, const vertex::VertexState& vs, const glm::vec4& object,
+                     const glm::vec4& eye, RasterPosState& rp) {
+  const vertex::ModelviewAnalysis mv = vertex::analyseModelview(ctx.modelview.top());
+  // _mesa_update_tnl_spaces: texgen that needs eye coordinates on a unit
+  // whose texture is enabled, point attenuation, lighting that needs them or
+  // a modelview that does not keep lengths.
+  const bool lit = ctx.lighting.lighting;
+  const bool eyeCoords = vs.texCoord.needEyeCoords || vs.pointAttenuated ||
+                         (lit && vs.lightingConstants && !vs.lightingConstants->lightsAllowObjectSpace) ||
+                         (lit && !mv.lengthPreserving);
+  const glm::vec3 n = eyeCoords ? vertex::transformNormalLikeMesa(mv.inverse, ctx.current.normal)
+                                : ctx.current.normal;
+  // The sphere-map terms (NORMALIZE_3FV of the eye position).
+  glm::vec3 u(eye);
+  {
+    float len = u.x * u.x + u.y * u.y + u.z * u.z;
+    if (len != 0.0f) {
+      len = 1.0f / std::sqrt(len);
+      u = glm::vec3(u.x * len, u.y * len, u.z * len);
+    }
+  }
+  const float twoNu = 2.0f * (n.x * u.x + n.y * u.y + n.z * u.z);
+  const glm::vec3 r(u.x - n.x * twoNu, u.y - n.y * twoNu, u.z - n.z * twoNu);
+  const float m = r.x * r.x + r.y * r.y + (r.z + 1.0f) * (r.z + 1.0f);
+  const float mInv = m > 0.0f ? 0.5f * (1.0f / std::sqrt(m)) : 0.0f;
+  auto dot4 = [](const glm::vec4& a, const glm::vec4& b) { return a.x * b.x + a.y * b.y + a.z * b.z + a.w * b.w; };
+  for (int unit = 0; unit < kMaxTextureUnits; ++unit) {
+    glm::vec4 tc = ctx.current.texCoord[unit];
+    const TextureUnitEnables& e = ctx.texture.enables[unit];
+    const bool on[4] = {e.genS, e.genT, e.genR, e.genQ};
+    const TexGenAttrib& g = ctx.texture.texgen[unit];
+    for (int j = 0; j < 4; ++j) {
+      if (!on[j]) continue;
+      switch (g.coord[j].mode) {
+        case GL_OBJECT_LINEAR: tc[j] = dot4(object, g.coord[j].objectPlane); break;
+        case GL_EYE_LINEAR: tc[j] = dot4(eye, g.coord[j].eyePlane); break;
+        case GL_SPHERE_MAP: tc[j] = r[j] * mInv + 0.5f; break;
+        case GL_REFLECTION_MAP: tc[j] = r[j]; break;
+        case GL_NORMAL_MAP: tc[j] = n[j]; break;
+        default: break;
+      }
+    }
+    rp.unitTexCoord[unit] = transformPoint(ctx.textureMatrix[unit].top(), tc);
+  }
+  rp.texCoord = rp.unitTexCoord[0];
 }
 
 // Every form is compiled as this one call (Mesa's save_RasterPos4f).
@@ -61,8 +117,8 @@ void rasterPos(float x, float y, float z, float w) {
   }
   rp.position[3] = clip.w;
   rp.distance = std::sqrt(eye.x * eye.x + eye.y * eye.y + eye.z * eye.z);
-  rp.texCoord = ctx->current.texCoord[0];
   const vertex::VertexState& vs = ctx->validate();
+  rasterTexCoords(*ctx, vs, object, eye, rp);  // texture coordinates (issue 14)
   if (vs.lighting) {
     // Lit by the lighting stage (Mesa lights it in C: not bit-identical).
     VertexBatch batch;

@@ -31,6 +31,8 @@ void addVertex(int size, float x, float y, float z, float w) {
   b.color.push_back(ctx->current.color);
   b.materialIndex.push_back(static_cast<uint32_t>(b.materials.size() - 1));
   b.edgeFlag.push_back(ctx->current.edgeFlag);  // polygon area: the edge flag
+  for (uint32_t m = b.texCoordUnits; m != 0; m &= m - 1)  // texture coordinates (issue 14)
+    b.texCoord[__builtin_ctz(m)].push_back(ctx->current.texCoord[__builtin_ctz(m)]);
   pipeline::vertexAdded(*ctx);
 }
 

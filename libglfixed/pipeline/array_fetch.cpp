@@ -5,6 +5,7 @@
 #include <type_traits>
 
 #include "state/context.h"
+#include "vertex/texcoord.h"
 
 namespace glfixed::pipeline {
 
@@ -84,6 +85,7 @@ bool resolve(const Context& ctx, const ClientArray& a, bool normalized, ArrayVie
 template <typename Each>
 void appendEach(const ArraySources& src, const Context& ctx, size_t count, VertexBatch& batch, Each indexAt) {
   const size_t start = batch.size();
+  if (start == 0) batch.setTexCoordUnits(vertex::texCoordInputUnits(ctx));  // texture coordinates (issue 14)
   batch.resizeVertices(start + count);
   const glm::vec4 currentNormal(ctx.current.normal, 0.0f);
   const glm::vec4& currentColor = ctx.current.color;
@@ -97,6 +99,12 @@ void appendEach(const ArraySources& src, const Context& ctx, size_t count, Verte
     // Polygon area: the edge flag array, else the current edge flag.
     batch.edgeFlag[o] =
         src.edgeFlag ? src.edgeFlagView.read(i, glm::vec4(1)).x != 0.0f : ctx.current.edgeFlag;
+    // Texture coordinates (issue 14): the unit's array, else its current coordinates.
+    for (uint32_t m = batch.texCoordUnits; m != 0; m &= m - 1) {
+      const int u = __builtin_ctz(m);
+      batch.texCoord[u][o] = src.texCoord[u] ? src.texCoordView[u].read(i, glm::vec4(0, 0, 0, 1))
+                                             : ctx.current.texCoord[u];
+    }
   }
 }
 

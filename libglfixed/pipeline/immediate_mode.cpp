@@ -5,6 +5,7 @@
 #include "pipeline/draw.h"
 #include "primitive/merge.h"
 #include "state/context.h"
+#include "vertex/texcoord.h"
 
 namespace glfixed::pipeline {
 
@@ -130,6 +131,7 @@ void drawPending(Context& ctx) {
 
 void beginPrimitive(Context& ctx, GLenum mode) {
   ctx.batch.reset(mode, ctx.lighting.material);
+  ctx.batch.setTexCoordUnits(vertex::texCoordInputUnits(ctx));  // texture coordinates (issue 14)
   ++ctx.vboStore.primCount;
   ctx.vboStore.openLoopWrapped = false;
 }

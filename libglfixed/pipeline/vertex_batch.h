@@ -13,6 +13,11 @@
 #include "state/lighting_attrib.h"
 
 namespace glfixed {
+// Texture coordinates (issue 14): the units a batch can carry.
+constexpr int kBatchTexCoordUnits = 8;
+}  // namespace glfixed
+
+namespace glfixed {
 
 using MaterialPair = std::array<Material, 2>;  // [kFront], [kBack]
 
@@ -28,6 +33,17 @@ struct VertexBatch {
   // Polygon area: each vertex's edge flag (GL 2.1 §2.6.2), 1 or 0; kept in
   // step with the other arrays.
   std::vector<uint8_t> edgeFlag;
+  // Texture coordinates (issue 14): s, t, r, q of each vertex for the units
+  // in texCoordUnits (bit u), kept in step with the other arrays; the other
+  // units' arrays are empty (the vertex stage uses the current coordinates).
+  // None are carried while no unit needs them.
+  uint32_t texCoordUnits = 0;
+  std::array<std::vector<glm::vec4>, kBatchTexCoordUnits> texCoord;
+  void setTexCoordUnits(uint32_t units) {
+    texCoordUnits = units;
+    for (int u = 0; u < kBatchTexCoordUnits; ++u)
+      texCoord[u].resize((units >> u & 1u) ? size() : 0, glm::vec4(0, 0, 0, 1));
+  }
   size_t size() const { return position.size(); }
   void reset(GLenum primitiveMode, const MaterialPair& current) {
     mode = primitiveMode;
@@ -43,15 +59,26 @@ struct VertexBatch {
     color.resize(n);
     materialIndex.resize(n);
     edgeFlag.resize(n, 1);
+    for (uint32_t m = texCoordUnits; m != 0; m &= m - 1) texCoord[__builtin_ctz(m)].resize(n, glm::vec4(0, 0, 0, 1));
   }
   // Appends vertices [first, last) of `from` (their material indexes as they are).
   void appendVertices(const VertexBatch& from, size_t first, size_t last) {
+    // Texture coordinates: an empty batch takes the units of the one it copies.
+    if (position.empty() && texCoordUnits != from.texCoordUnits) setTexCoordUnits(from.texCoordUnits);
     position.insert(position.end(), from.position.begin() + first, from.position.begin() + last);
     normal.insert(normal.end(), from.normal.begin() + first, from.normal.begin() + last);
     color.insert(color.end(), from.color.begin() + first, from.color.begin() + last);
     materialIndex.insert(materialIndex.end(), from.materialIndex.begin() + first,
                          from.materialIndex.begin() + last);
     edgeFlag.insert(edgeFlag.end(), from.edgeFlag.begin() + first, from.edgeFlag.begin() + last);
+    for (uint32_t m = texCoordUnits; m != 0; m &= m - 1) {
+      const int u = __builtin_ctz(m);
+      std::vector<glm::vec4>& t = texCoord[u];
+      if (from.texCoordUnits >> u & 1u)
+        t.insert(t.end(), from.texCoord[u].begin() + first, from.texCoord[u].begin() + last);
+      else
+        t.resize(position.size(), glm::vec4(0, 0, 0, 1));
+    }
   }
   void eraseFirstVertices(size_t n) { eraseVertices(0, n); }
   // Erases vertices [first, last) (their material indexes as they are).
@@ -61,6 +88,9 @@ struct VertexBatch {
     color.erase(color.begin() + first, color.begin() + last);
     materialIndex.erase(materialIndex.begin() + first, materialIndex.begin() + last);
     edgeFlag.erase(edgeFlag.begin() + first, edgeFlag.begin() + last);
+    for (uint32_t m = texCoordUnits; m != 0; m &= m - 1)
+      texCoord[__builtin_ctz(m)].erase(texCoord[__builtin_ctz(m)].begin() + first,
+                                       texCoord[__builtin_ctz(m)].begin() + last);
   }
 };
 
@@ -76,6 +106,10 @@ struct ShadedVertices {
   // distance attenuation is on (hasPointSize); else the state's size is used.
   std::vector<float> pointSize;
   bool hasPointSize = false;
+  // Texture coordinates (issue 14, vertex/texcoord.h): s, t, r, q of each
+  // vertex for the units in texCoordUnits, after texgen and the texture matrix.
+  uint32_t texCoordUnits = 0;
+  std::array<std::vector<glm::vec4>, kBatchTexCoordUnits> texCoord;
   size_t size() const { return clip.size(); }
 };
 

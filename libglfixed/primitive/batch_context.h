@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstdint>
+#include <cstring>
 #include <vector>
 
 #include "primitive/clip.h"
@@ -68,7 +69,22 @@ struct BatchContext {
   // lines drawn so far: each line adds its length in pixels rounded up
   // (draw_pipe_stipple.c, an unsigned `counter`; scene lines_stipple).
   mutable uint32_t lineStippleCounter = 0;
+  // Texture coordinates (issue 14): the attributes the clipper interpolates
+  // (colours, then 4 per unit up to the highest in raster.texCoordUnits), and
+  // the window varyings that carry them (colours, then kTexCoordVarying + 4 u).
+  int clipAttribCount = kClipAttribCount;
+  int windowVaryingCount = 8;
 };
+
+// Texture coordinates (issue 14): ClipVertex attributes -> window varyings
+// for the units in b.raster.texCoordUnits.
+inline void copyTexCoords(const BatchContext& b, const ClipVertex& v, raster::WindowVertex& w) {
+  for (uint32_t m = b.raster.texCoordUnits; m != 0; m &= m - 1) {
+    const int u = __builtin_ctz(m);
+    std::memcpy(w.varying + raster::kTexCoordVarying + 4 * u, v.attr + kClipTexCoordAttribs + 4 * u,
+                4 * sizeof(float));
+  }
+}
 
 // A triangle leaving the clipper: the draw module's cull stage (pipeline
 // only), then llvmpipe's triangle setup.

@@ -50,8 +50,13 @@ inline const UserClipPlanes kNoUserClipPlanes{};
 glm::vec4 transformPlane(const glm::vec4& plane, const glm::mat4& m);
 
 // Colours carried through clipping: front primary, front secondary, back
-// primary, back secondary (RGBA each).
-constexpr int kMaxClipAttribs = 16;
+// primary, back secondary (RGBA each); GL_FLAT copies only these.
+constexpr int kClipColorAttribs = 16;
+// Texture coordinates (issue 14): then s, t, r, q of each carried unit u at
+// kClipTexCoordAttribs + 4 u, interpolated like the colours.
+constexpr int kClipTexCoordAttribs = kClipColorAttribs;
+constexpr int kClipTexCoordUnits = 8;
+constexpr int kMaxClipAttribs = kClipTexCoordAttribs + 4 * kClipTexCoordUnits;
 
 struct ClipVertex {
   glm::vec4 clip{0};     // clip coordinates

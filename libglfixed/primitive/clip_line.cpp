@@ -36,7 +36,7 @@ bool clipLine(const ClipVertex& v0, const ClipVertex& v1, uint32_t m0, uint32_t 
   auto moveEnd = [&](const ClipVertex& end, const ClipVertex& other, float t, ClipVertex& dst) {
     interpolateClipVertex(end, other, t, attribCount, viewport, dst);
     if (flat)
-      for (int k = 0; k < attribCount; ++k) dst.attr[k] = provoking.attr[k];
+      for (int k = 0; k < attribCount && k < kClipColorAttribs; ++k) dst.attr[k] = provoking.attr[k];
   };
   if (m0 != 0) {
     moveEnd(v0, v1, t0, made[0]);

@@ -46,6 +46,8 @@ void setupTriangle(const BatchContext& b, const ClipVertex& v0, const ClipVertex
 
   const int base = (b.twoSided && !front && forcedFace == 0) ? kBackAttribs : kFrontAttribs;
   for (int i = 0; i < 3; ++i) std::memcpy(w[i].varying, v[i]->attr + base, sizeof(float) * b.varyingCount);
+  if (b.raster.texCoordUnits != 0)  // texture coordinates (issue 14)
+    for (int i = 0; i < 3; ++i) copyTexCoords(b, *v[i], w[i]);
   // Flat colours: the provoking vertex's (GL_FLAT), or Mesa's constant.
   const float* flat = nullptr;
   float flatValues[raster::kMaxVaryings];
@@ -118,6 +120,11 @@ void loadVertices(const ShadedVertices& in, uint32_t n, const ViewportTransform&
       v.attr[kBackAttribs + 4 + k] = bs[k];
     }
     v.pointSize = in.hasPointSize ? in.pointSize[i] : 1.0f;  // points: per-vertex size
+    // Texture coordinates (issue 14): after the colours, 4 per unit.
+    for (uint32_t m = in.texCoordUnits; m != 0; m &= m - 1) {
+      const int u = __builtin_ctz(m);
+      std::memcpy(v.attr + kClipTexCoordAttribs + 4 * u, &in.texCoord[u][i][0], 4 * sizeof(float));
+    }
   }
 }
 
@@ -160,7 +167,7 @@ void drawSegment(BatchContext& b, GLenum mode, const Segment& seg, bool indexed,
   assembleTriangles(mode, seg.count, state.firstVertexConvention, b.flatInputs, path, triangles);
 
   const int provokingSlot = primitive::provokingSlot(state.firstVertexConvention);
-  const int attribCount = kClipAttribCount;
+  const int attribCount = b.clipAttribCount;  // texture coordinates (issue 14): and theirs
   static thread_local ClippedPolygon polygon;
   // Polygon area: the draw module's polygon stages, with each triangle's
   // boundary edges (unfilled.cpp). GL 2.1 §3.6.4: edge flags apply to
@@ -240,6 +247,14 @@ void drawPrimitives(const PrimitiveState& state, const ShadedVertices& vertices,
   b.raster.flatGroups = ((state.flat || state.constantPrimary) ? Group::kPrimaryGroup : 0u) |
                         ((state.flat || state.constantSecondary) ? Group::kSecondaryGroup : 0u);
   b.flatInputs = state.flat && (!state.constantPrimary || (secondary && !state.constantSecondary));
+  // Texture coordinates (issue 14): the units the vertex stage made, carried
+  // through the clipper after the colours.
+  b.raster.texCoordUnits = vertices.texCoordUnits;
+  if (vertices.texCoordUnits != 0) {
+    const int units = 32 - __builtin_clz(vertices.texCoordUnits);
+    b.clipAttribCount = kClipTexCoordAttribs + 4 * units;
+    b.windowVaryingCount = raster::kTexCoordVarying + 4 * units;
+  }
 
   // Polygon area: when polygon state makes Mesa run the draw module's
   // pipeline for polygons (batch_context.h, PolygonPipeline).

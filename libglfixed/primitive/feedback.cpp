@@ -10,8 +10,9 @@ namespace {
 
 class FeedbackSink final : public PrimitiveSink {
  public:
-  FeedbackSink(FeedbackState& feedback, int framebufferHeight, const glm::vec4& texCoord)
-      : fb_(feedback), height_(static_cast<float>(framebufferHeight)), texCoord_(texCoord) {}
+  FeedbackSink(FeedbackState& feedback, int framebufferHeight, const glm::vec4& texCoord, bool perVertex)
+      : fb_(feedback), height_(static_cast<float>(framebufferHeight)), texCoord_(texCoord),
+        perVertexTexCoord_(perVertex) {}
 
   void point(const ClipVertex& v) override {
     fb_.token(static_cast<GLfloat>(GL_POINT_TOKEN));
@@ -42,19 +43,23 @@ class FeedbackSink final : public PrimitiveSink {
     if (type == GL_3D_COLOR || type == GL_3D_COLOR_TEXTURE || type == GL_4D_COLOR_TEXTURE)
       for (int k = 0; k < 4; ++k) fb_.token(v.attr[color + k]);
     if (type == GL_3D_COLOR_TEXTURE || type == GL_4D_COLOR_TEXTURE)
-      for (int k = 0; k < 4; ++k) fb_.token(texCoord_[k]);
+      for (int k = 0; k < 4; ++k) fb_.token(perVertexTexCoord_ ? v.attr[kSinkTexCoord + k] : texCoord_[k]);
   }
 
   FeedbackState& fb_;
   float height_;
   glm::vec4 texCoord_;
+  // Texture coordinates (issue 14): each vertex's unit-0 coordinates from
+  // the vertex stage (after texgen and the texture matrix, clipped ones
+  // interpolated), else `texCoord_` for all.
+  bool perVertexTexCoord_;
 };
 
 }  // namespace
 
 void feedbackPrimitives(const PrimitiveState& state, const ShadedVertices& vertices, int framebufferHeight,
                         const glm::vec4& texCoord, FeedbackState& feedback) {
-  FeedbackSink sink(feedback, framebufferHeight, texCoord);
+  FeedbackSink sink(feedback, framebufferHeight, texCoord, (vertices.texCoordUnits & 1u) != 0);
   drawUnrasterized(state, vertices, framebufferHeight, sink);
 }
 

@@ -36,7 +36,7 @@ void clipAndEmit(const BatchContext& b, const ClipVertex& v0, const ClipVertex& 
   const ClipVertex *e0, *e1;
   // Under GL_FLAT the clipper copies the provoking colours into a moved end
   // (copy_flat); emitLine takes them from `provoking` anyway.
-  if (!clipLine(v0, v1, m0, m1, m0 | m1, kClipAttribCount, b.viewport, b.state.flat, provoking, made, &e0,
+  if (!clipLine(v0, v1, m0, m1, m0 | m1, b.clipAttribCount, b.viewport, b.state.flat, provoking, made, &e0,
                 &e1, b.state.userClipPlanes))  // clip planes and scissor: the user planes too
     return;
   if (restart) resetLineStipple(b);
@@ -114,8 +114,10 @@ void stippleLine(const BatchContext& b, const raster::WindowVertex& v0, const ra
   const uint32_t counter = b.lineStippleCounter;
   auto piece = [&](float t0, float t1) {
     raster::WindowVertex p0, p1;
-    if (t0 > 0.0) screenInterpolate(v0, v1, t0, b.varyingCount, p0);
-    if (t1 < 1.0) screenInterpolate(v0, v1, t1, b.varyingCount, p1);
+    // Texture coordinates (issue 14): interpolated with the colours.
+    const int varyings = b.raster.texCoordUnits != 0 ? b.windowVaryingCount : b.varyingCount;
+    if (t0 > 0.0) screenInterpolate(v0, v1, t0, varyings, p0);
+    if (t1 < 1.0) screenInterpolate(v0, v1, t1, varyings, p1);
     drawPiece(t0 > 0.0 ? p0 : v0, t1 < 1.0 ? p1 : v1);
   };
   float start = 0;
@@ -146,6 +148,7 @@ void emitLine(const BatchContext& b, const ClipVertex& v0, const ClipVertex& v1,
     w[i].oneOverW = v[i]->window[3];
     // Lines are always front-facing (lp_setup_line.c): front colours.
     std::memcpy(w[i].varying, v[i]->attr + kFrontAttribs, sizeof(float) * b.varyingCount);
+    if (b.raster.texCoordUnits != 0) copyTexCoords(b, *v[i], w[i]);  // texture coordinates (issue 14)
   }
   // Flat colours: the provoking vertex's (GL_FLAT), or Mesa's constant.
   const float* flat = nullptr;

@@ -17,7 +17,8 @@ namespace glfixed::primitive {
 
 namespace {
 
-constexpr int kAttribCount = 8;  // front and back primary colours
+constexpr int kColorAttribCount = 8;  // front and back primary colours
+constexpr int kAttribCount = kSinkTexCoord + 4;  // and unit 0's texture coordinates
 
 struct Batch {
   const PrimitiveState& state;
@@ -42,6 +43,9 @@ void loadVertices(const ShadedVertices& in, uint32_t n, const ViewportTransform&
       v.attr[kSinkFrontColor + k] = front[k];
       v.attr[kSinkBackColor + k] = back[k];
     }
+    // Texture coordinates (issue 14): unit 0's, when the vertex stage made them.
+    const glm::vec4 t = (in.texCoordUnits & 1u) ? in.texCoord[0][i] : glm::vec4(0, 0, 0, 1);
+    for (int k = 0; k < 4; ++k) v.attr[kSinkTexCoord + k] = t[k];
   }
 }
 
@@ -66,7 +70,7 @@ void emitClippedPolygon(const Batch& b, const ClippedPolygon& poly, const ClipVe
   const ClipVertex* first = poly.vertex[0];
   if (b.state.flat && first != &provoking) {
     firstCopy = *first;
-    for (int k = 0; k < kAttribCount; ++k) firstCopy.attr[k] = provoking.attr[k];
+    for (int k = 0; k < kColorAttribCount; ++k) firstCopy.attr[k] = provoking.attr[k];
     first = &firstCopy;
   }
   for (int i = 2; i < poly.count; ++i) {

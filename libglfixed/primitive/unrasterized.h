@@ -26,6 +26,9 @@ namespace glfixed::primitive {
 // Attribute layout inside ClipVertex::attr for the sinks.
 constexpr int kSinkFrontColor = 0;
 constexpr int kSinkBackColor = 4;
+// Texture coordinates (issue 14): unit 0's s, t, r, q, interpolated by the
+// clipper like the colours (GL_FEEDBACK reports them).
+constexpr int kSinkTexCoord = kClipTexCoordAttribs;
 
 // Receives the primitives in order. A vertex's window position is x, y
 // measured down from the top of the framebuffer, z, and 1/w (viewport.h).

@@ -130,6 +130,9 @@ constexpr Capability kTable[] = {
           GL_MULTISAMPLE_BIT, 0, kHeld),
     entry(GL_SAMPLE_COVERAGE, field<&Context::multisample, &MultisampleAttrib::sampleCoverage>,
           GL_MULTISAMPLE_BIT, 0, kHeld),
+    // Texture coordinates (issue 14): an enabled target makes the vertex
+    // stage output the unit's coordinates (vertex/texcoord.h); texgen is
+    // computed there. Sampling them is the texture stage's.
     entry(GL_TEXTURE_1D, textureUnit<&TextureUnitEnables::texture1D>, GL_TEXTURE_BIT, 0, kSettable, true),
     entry(GL_TEXTURE_2D, textureUnit<&TextureUnitEnables::texture2D>, GL_TEXTURE_BIT, 0, kSettable, true),
     entry(GL_TEXTURE_3D, textureUnit<&TextureUnitEnables::texture3D>, GL_TEXTURE_BIT, 0, kSettable, true),

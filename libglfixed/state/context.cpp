@@ -16,7 +16,16 @@ const vertex::VertexState& Context::validate() {
     vertexState_.eyeFromObject = modelview.top();
     vertexState_.clipFromObject = projection.top() * modelview.top();
   }
-  if (dirty_ & kDirtyLighting) vertex::buildLightingConstants(lighting, transform, lightingConstants_);
+  // Texture coordinates (issue 14): rebuilt at every draw (cheap while no
+  // unit is enabled). Texgen that needs eye coordinates makes Mesa's whole
+  // shader work in eye space (_NeedEyeCoords), lighting included.
+  vertex::buildTexCoordState(*this, vertexState_.texCoord);
+  if (vertexState_.texCoord.needEyeCoords != lightingConstants_.texgenNeedsEyeCoords) dirty_ |= kDirtyLighting;
+  if (dirty_ & kDirtyLighting) {
+    vertex::buildLightingConstants(lighting, transform, lightingConstants_);
+    lightingConstants_.texgenNeedsEyeCoords = vertexState_.texCoord.needEyeCoords;
+    if (lightingConstants_.texgenNeedsEyeCoords) lightingConstants_.lightsAllowObjectSpace = false;
+  }
   vertexState_.lighting = lighting.lighting;
   vertexState_.lightingConstants = &lightingConstants_;
   vertexState_.lightingAttrib = &lighting;

@@ -38,6 +38,8 @@ constexpr int kViewportBoundsMin = -2 * kMaxViewportSize;  // Mesa's GL_VIEWPORT
 constexpr int kViewportBoundsMax = 2 * kMaxViewportSize - 1;
 constexpr int kSubpixelBits = 8;
 constexpr int kMaxClientAttribStackDepth = 16;  // GL_MAX_CLIENT_ATTRIB_STACK_DEPTH, as Mesa
+// Texture coordinates (issue 14): GL_MAX_TEXTURE_STACK_DEPTH, as Mesa.
+constexpr int kMaxTextureStackDepth = 10;
 
 // One entry of the glPushClientAttrib stack (GL 2.1 §6.1.14).
 struct ClientAttribEntry {
@@ -80,6 +82,10 @@ class Context {
   ListAttrib list;
   MatrixStack modelview{kMaxModelviewStackDepth};
   MatrixStack projection{kMaxProjectionStackDepth};
+  // Texture coordinates (issue 14): the texture matrix stack of every unit
+  // (GL 2.1 §2.11.2); glMatrixMode(GL_TEXTURE) addresses the active unit's.
+  std::vector<MatrixStack> textureMatrix{static_cast<size_t>(kMaxTextureUnits),
+                                         MatrixStack(kMaxTextureStackDepth)};
   RasterPosState rasterPos;    // glRasterPos (§2.13); belongs to GL_CURRENT_BIT
   RenderModeState renderMode;  // glRenderMode, selection, feedback (§5.2, §5.3)
 
@@ -160,7 +166,10 @@ class Context {
     return e;
   }
 
-  MatrixStack& currentMatrixStack() { return transform.matrixMode == GL_PROJECTION ? projection : modelview; }
+  MatrixStack& currentMatrixStack() {
+    if (transform.matrixMode == GL_TEXTURE) return textureMatrix[texture.activeUnit()];  // texture coordinates
+    return transform.matrixMode == GL_PROJECTION ? projection : modelview;
+  }
   void markDirty(uint32_t bits) { dirty_ |= bits; }
   // A setter changed state of glPushAttrib group(s) `attribGroups` (GL_*_BIT)
   // and derived state `dirty` must be rebuilt before the next draw.

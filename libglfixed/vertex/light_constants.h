@@ -64,6 +64,9 @@ struct LightingConstants {
   // non-spot lights, infinite viewer, single colour) and the modelview preserves
   // lengths (light.c, _mesa_update_lighting / _mesa_update_tnl_spaces).
   bool lightsAllowObjectSpace = false;
+  // Texture coordinates (issue 14): texgen needed eye coordinates when these
+  // were built (Context::validate then clears lightsAllowObjectSpace).
+  bool texgenNeedsEyeCoords = false;
 
   // A new value, unique in the process, for every rebuild: caches derived from
   // the constants compare it.

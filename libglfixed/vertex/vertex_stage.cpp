@@ -62,6 +62,9 @@ void shadeBatch(const VertexState& state, const VertexBatch& batch, ShadedVertic
     out.pointSize.resize(n);
     for (size_t i = 0; i < n; ++i) out.pointSize[i] = attenuatedPointSize(state, batch.position[i]);
   }
+  // Texture coordinates (issue 14): only for the units the shader outputs.
+  out.texCoordUnits = 0;
+  if (state.texCoord.units != 0) computeTexCoords(state.texCoord, state.eyeFromObject, batch, out);
   if (state.lighting) {
     lightBatch(state, batch, out);
     return;

@@ -6,6 +6,7 @@
 
 #include "pipeline/vertex_batch.h"
 #include "vertex/light_constants.h"
+#include "vertex/texcoord.h"
 
 namespace glfixed::vertex {
 
@@ -24,6 +25,9 @@ struct VertexState {
   bool pointAttenuated = false;
   glm::vec3 pointAttenuation{1, 0, 0};
   float pointSizeClamp[3] = {1, 1, 255};
+  // Texture coordinates (issue 14, vertex/texcoord.h): the units the shader
+  // outputs and how it computes them; texCoord.units == 0: none.
+  TexCoordState texCoord;
 };
 
 // The attenuated size of one vertex (see pointAttenuated).

@@ -7,51 +7,18 @@
 
 #include "api/api.h"
 #include "api/list_record.h"
+#include "api/tex_image_common.h"
 #include "texture/internal_format.h"
 #include "texture/texture_image.h"
 #include "texture/texture_objects.h"
 #include "texture/unpack.h"
 
 using namespace glfixed;
+using namespace glfixed::api::teximage;
 using texture::TextureImage;
 using texture::TextureObject;
 
 namespace {
-
-// What an image target names: the object's target index, the cube face,
-// whether it is a proxy.
-struct ImageTarget {
-  int index = -1;
-  int face = 0;
-  bool proxy = false;
-};
-
-// The image targets of a command of `dims` dimensions; false: GL_INVALID_ENUM.
-bool imageTarget(GLenum target, int dims, bool allowProxy, ImageTarget& out) {
-  switch (target) {
-    case GL_TEXTURE_1D: out = {0, 0, false}; return dims == 1;
-    case GL_PROXY_TEXTURE_1D: out = {0, 0, true}; return dims == 1 && allowProxy;
-    case GL_TEXTURE_2D: out = {1, 0, false}; return dims == 2;
-    case GL_PROXY_TEXTURE_2D: out = {1, 0, true}; return dims == 2 && allowProxy;
-    case GL_TEXTURE_3D: out = {2, 0, false}; return dims == 3;
-    case GL_PROXY_TEXTURE_3D: out = {2, 0, true}; return dims == 3 && allowProxy;
-    case GL_PROXY_TEXTURE_CUBE_MAP: out = {3, 0, true}; return dims == 2 && allowProxy;
-    default:
-      if (target >= GL_TEXTURE_CUBE_MAP_POSITIVE_X && target <= GL_TEXTURE_CUBE_MAP_NEGATIVE_Z) {
-        out = {3, static_cast<int>(target - GL_TEXTURE_CUBE_MAP_POSITIVE_X), false};
-        return dims == 2;
-      }
-      return false;
-  }
-}
-
-int maxLevels(int index) { return index == 2 ? 12 : texture::kMaxTextureLevels; }
-int maxSize(int index) { return index == 2 ? texture::kMax3DTextureSize : texture::kMaxTextureSize; }
-
-TextureObject& targetObject(Context& ctx, const ImageTarget& t) {
-  if (t.proxy) return ctx.textures->proxy(t.index);
-  return texture::boundObject(*ctx.textures, ctx.texture.binding[ctx.texture.activeUnit()], t.index);
-}
 
 // The client memory of an unpack: `pixels` itself, or an offset into the
 // bound pixel unpack buffer (§4.3.5). Null with `error` set if the image
@@ -77,11 +44,6 @@ GLenum checkFormats(GLenum base, GLenum format, GLenum type) {
   if (format == GL_STENCIL_INDEX) return GL_INVALID_OPERATION;
   if ((base == GL_DEPTH_COMPONENT) != (format == GL_DEPTH_COMPONENT)) return GL_INVALID_OPERATION;
   return GL_NO_ERROR;
-}
-
-void maybeGenerateMipmaps(Context& ctx, TextureObject& object, const ImageTarget& t, int level) {
-  if (!object.generateMipmap || t.proxy || level != object.params.baseLevel) return;
-  if (!texture::generateMipmaps(object, t.face, level, maxLevels(t.index))) ctx.recordError(GL_OUT_OF_MEMORY);
 }
 
 void texImage(int dims, GLenum target, GLint level, GLint internalFormat, GLsizei width, GLsizei height,

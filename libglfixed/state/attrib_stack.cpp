@@ -46,6 +46,30 @@ void restoreLighting(Context& c, const AttribNode& n) {
   c.markDirty(kDirtyLighting);  // light positions restore as stored, in eye space
 }
 
+// Textures: the parameters of the bound texture objects (GL_TEXTURE_BIT),
+// restored into the objects of the names bound at the push, where they
+// still exist, after the bindings themselves.
+void saveTextureParams(Context& c, AttribNode& n) {
+  for (int unit = 0; unit < kMaxTextureUnits; ++unit)
+    for (int index = 0; index < texture::kTargetCount; ++index) {
+      const texture::TextureObject& o = texture::boundObject(*c.textures, c.texture.binding[unit], index);
+      n.textureParams[unit][index] = {texture::bindingOf(c.texture.binding[unit], index), o.params, o.generateMipmap,
+                                      o.priority};
+    }
+}
+void restoreTextureParams(Context& c, const AttribNode& n) {
+  for (int unit = 0; unit < kMaxTextureUnits; ++unit)
+    for (int index = 0; index < texture::kTargetCount; ++index) {
+      const AttribNode::BoundTextureParams& saved = n.textureParams[unit][index];
+      texture::TextureObject* o =
+          saved.name ? c.textures->find(saved.name) : &c.textures->defaultTexture(index);
+      if (!o) continue;
+      o->params = saved.params;
+      o->generateMipmap = saved.generateMipmap;
+      o->priority = saved.priority;
+    }
+}
+
 // The table, in Mesa's order of restoration (main/attrib.c). GL_LIST_BIT
 // comes with the display lists: a member in AttribNode and, after
 // GL_LIGHTING_BIT, copied<&Context::list, &AttribNode::list>(GL_LIST_BIT).
@@ -69,6 +93,7 @@ const Group kGroups[] = {
     copied<&Context::scissor, &AttribNode::scissor>(GL_SCISSOR_BIT),
     copied<&Context::stencil, &AttribNode::stencil>(GL_STENCIL_BUFFER_BIT),
     copied<&Context::texture, &AttribNode::texture>(GL_TEXTURE_BIT),
+    Group{GL_TEXTURE_BIT, saveTextureParams, restoreTextureParams},  // textures: the bound objects' parameters
     // GL_NORMALIZE and GL_RESCALE_NORMAL are read by the lighting constants.
     copied<&Context::transform, &AttribNode::transform, kDirtyLighting>(GL_TRANSFORM_BIT),
     copied<&Context::viewport, &AttribNode::viewport>(GL_VIEWPORT_BIT),

@@ -12,6 +12,7 @@
 #include "state/eval_attrib.h"
 #include "state/lighting_attrib.h"
 #include "state/raster_pos.h"
+#include "texture/texture_object.h"
 
 namespace glfixed {
 
@@ -48,6 +49,15 @@ struct AttribNode {
   TransformAttrib transform;
   ViewportAttrib viewport;
   MultisampleAttrib multisample;
+  // Textures: GL_TEXTURE_BIT also holds the parameters of the objects bound
+  // to every target of every unit (table 6.23; Mesa's attrib.c saves them).
+  struct BoundTextureParams {
+    GLuint name = 0;
+    texture::SamplerParams params;
+    bool generateMipmap = false;
+    float priority = 1;
+  };
+  std::array<std::array<BoundTextureParams, 4>, kMaxTextureUnits> textureParams;
 };
 
 class AttribStack {

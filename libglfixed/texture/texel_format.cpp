@@ -39,9 +39,10 @@ const TexelFormatInfo kInfo[] = {
 static_assert(sizeof(kInfo) / sizeof(kInfo[0]) == static_cast<size_t>(TexelFormat::Count),
               "one row per TexelFormat");
 
-// n bits (n <= 8) widened to 8 by repeating the bits, which is exact for
-// every value (v * 255 / (2^n - 1) is an integer for n = 1, 2, 4, 8 and
-// rounds to this for 3, 5, 6).
+// n bits (n <= 8) widened to 8 by repeating the bits: exact for n = 1, 2,
+// 4, 8; for 3, 5 and 6 it can be one below round(v * 255 / (2^n - 1))
+// (5 bits: 3 -> 24, not 25). Not probed against llvmpipe's sampler, which
+// owns how it reads these formats (texture/sampler.cpp).
 uint8_t widenTo8(uint32_t v, int bits) {
   if (bits >= 8) return static_cast<uint8_t>(v);
   uint32_t out = 0;

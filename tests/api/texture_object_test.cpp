@@ -125,6 +125,23 @@ TEST_F(TextureObjectTest, BindingsInTextureBit) {
   EXPECT_EQ(GetInt(GL_TEXTURE_BINDING_2D), 5);
 }
 
+// GL_TEXTURE_BIT holds the parameters of the bound objects too (table 6.23).
+TEST_F(TextureObjectTest, BoundObjectsParametersInTextureBit) {
+  glBindTexture(GL_TEXTURE_2D, 5);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_WRAP_S, GL_CLAMP);  // the default 1D texture
+  glPushAttrib(GL_TEXTURE_BIT);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+  glPopAttrib();
+  EXPECT_NO_GL_ERROR();
+  GLint v = 0;
+  glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, &v);
+  EXPECT_EQ(v, GL_LINEAR);
+  glGetTexParameteriv(GL_TEXTURE_1D, GL_TEXTURE_WRAP_S, &v);
+  EXPECT_EQ(v, GL_CLAMP);
+}
+
 TEST_F(TextureObjectTest, BindInDisplayList) {
   GLuint list = glGenLists(1);
   glNewList(list, GL_COMPILE);

@@ -84,6 +84,88 @@ GLAPI void APIENTRY glLoadTransposeMatrixdARB(const GLdouble* m) { glLoadTranspo
 GLAPI void APIENTRY glMultTransposeMatrixfARB(const GLfloat* m) { glMultTransposeMatrixf(m); }
 GLAPI void APIENTRY glMultTransposeMatrixdARB(const GLdouble* m) { glMultTransposeMatrixd(m); }
 
+// ARB_multitexture (glMultiTexCoord*ARB), EXT_texture3D, EXT_texture_object,
+// EXT_copy_texture, EXT_subtexture: the texture commands' older names.
+GLAPI void APIENTRY glMultiTexCoord1sARB(GLenum target, GLshort s) { glMultiTexCoord1s(target, s); }
+GLAPI void APIENTRY glMultiTexCoord1svARB(GLenum target, const GLshort* v) { glMultiTexCoord1sv(target, v); }
+GLAPI void APIENTRY glMultiTexCoord1iARB(GLenum target, GLint s) { glMultiTexCoord1i(target, s); }
+GLAPI void APIENTRY glMultiTexCoord1ivARB(GLenum target, const GLint* v) { glMultiTexCoord1iv(target, v); }
+GLAPI void APIENTRY glMultiTexCoord1fARB(GLenum target, GLfloat s) { glMultiTexCoord1f(target, s); }
+GLAPI void APIENTRY glMultiTexCoord1fvARB(GLenum target, const GLfloat* v) { glMultiTexCoord1fv(target, v); }
+GLAPI void APIENTRY glMultiTexCoord1dARB(GLenum target, GLdouble s) { glMultiTexCoord1d(target, s); }
+GLAPI void APIENTRY glMultiTexCoord1dvARB(GLenum target, const GLdouble* v) { glMultiTexCoord1dv(target, v); }
+GLAPI void APIENTRY glMultiTexCoord2sARB(GLenum target, GLshort s, GLshort t) { glMultiTexCoord2s(target, s, t); }
+GLAPI void APIENTRY glMultiTexCoord2svARB(GLenum target, const GLshort* v) { glMultiTexCoord2sv(target, v); }
+GLAPI void APIENTRY glMultiTexCoord2iARB(GLenum target, GLint s, GLint t) { glMultiTexCoord2i(target, s, t); }
+GLAPI void APIENTRY glMultiTexCoord2ivARB(GLenum target, const GLint* v) { glMultiTexCoord2iv(target, v); }
+GLAPI void APIENTRY glMultiTexCoord2fARB(GLenum target, GLfloat s, GLfloat t) { glMultiTexCoord2f(target, s, t); }
+GLAPI void APIENTRY glMultiTexCoord2fvARB(GLenum target, const GLfloat* v) { glMultiTexCoord2fv(target, v); }
+GLAPI void APIENTRY glMultiTexCoord2dARB(GLenum target, GLdouble s, GLdouble t) { glMultiTexCoord2d(target, s, t); }
+GLAPI void APIENTRY glMultiTexCoord2dvARB(GLenum target, const GLdouble* v) { glMultiTexCoord2dv(target, v); }
+GLAPI void APIENTRY glMultiTexCoord3sARB(GLenum target, GLshort s, GLshort t, GLshort r) { glMultiTexCoord3s(target, s, t, r); }
+GLAPI void APIENTRY glMultiTexCoord3svARB(GLenum target, const GLshort* v) { glMultiTexCoord3sv(target, v); }
+GLAPI void APIENTRY glMultiTexCoord3iARB(GLenum target, GLint s, GLint t, GLint r) { glMultiTexCoord3i(target, s, t, r); }
+GLAPI void APIENTRY glMultiTexCoord3ivARB(GLenum target, const GLint* v) { glMultiTexCoord3iv(target, v); }
+GLAPI void APIENTRY glMultiTexCoord3fARB(GLenum target, GLfloat s, GLfloat t, GLfloat r) { glMultiTexCoord3f(target, s, t, r); }
+GLAPI void APIENTRY glMultiTexCoord3fvARB(GLenum target, const GLfloat* v) { glMultiTexCoord3fv(target, v); }
+GLAPI void APIENTRY glMultiTexCoord3dARB(GLenum target, GLdouble s, GLdouble t, GLdouble r) { glMultiTexCoord3d(target, s, t, r); }
+GLAPI void APIENTRY glMultiTexCoord3dvARB(GLenum target, const GLdouble* v) { glMultiTexCoord3dv(target, v); }
+GLAPI void APIENTRY glMultiTexCoord4sARB(GLenum target, GLshort s, GLshort t, GLshort r, GLshort q) { glMultiTexCoord4s(target, s, t, r, q); }
+GLAPI void APIENTRY glMultiTexCoord4svARB(GLenum target, const GLshort* v) { glMultiTexCoord4sv(target, v); }
+GLAPI void APIENTRY glMultiTexCoord4iARB(GLenum target, GLint s, GLint t, GLint r, GLint q) { glMultiTexCoord4i(target, s, t, r, q); }
+GLAPI void APIENTRY glMultiTexCoord4ivARB(GLenum target, const GLint* v) { glMultiTexCoord4iv(target, v); }
+GLAPI void APIENTRY glMultiTexCoord4fARB(GLenum target, GLfloat s, GLfloat t, GLfloat r, GLfloat q) { glMultiTexCoord4f(target, s, t, r, q); }
+GLAPI void APIENTRY glMultiTexCoord4fvARB(GLenum target, const GLfloat* v) { glMultiTexCoord4fv(target, v); }
+GLAPI void APIENTRY glMultiTexCoord4dARB(GLenum target, GLdouble s, GLdouble t, GLdouble r, GLdouble q) { glMultiTexCoord4d(target, s, t, r, q); }
+GLAPI void APIENTRY glMultiTexCoord4dvARB(GLenum target, const GLdouble* v) { glMultiTexCoord4dv(target, v); }
+GLAPI void APIENTRY glTexImage3DEXT(GLenum target, GLint level, GLenum internalformat, GLsizei width, GLsizei height,
+                                     GLsizei depth, GLint border, GLenum format, GLenum type, const void* pixels) {
+  glTexImage3D(target, level, static_cast<GLint>(internalformat), width, height, depth, border, format, type, pixels);
+}
+GLAPI void APIENTRY glTexSubImage3DEXT(GLenum target, GLint level, GLint xoffset, GLint yoffset, GLint zoffset,
+                                        GLsizei width, GLsizei height, GLsizei depth, GLenum format, GLenum type,
+                                        const void* pixels) {
+  glTexSubImage3D(target, level, xoffset, yoffset, zoffset, width, height, depth, format, type, pixels);
+}
+GLAPI void APIENTRY glTexSubImage1DEXT(GLenum target, GLint level, GLint xoffset, GLsizei width, GLenum format,
+                                        GLenum type, const void* pixels) {
+  glTexSubImage1D(target, level, xoffset, width, format, type, pixels);
+}
+GLAPI void APIENTRY glTexSubImage2DEXT(GLenum target, GLint level, GLint xoffset, GLint yoffset, GLsizei width,
+                                        GLsizei height, GLenum format, GLenum type, const void* pixels) {
+  glTexSubImage2D(target, level, xoffset, yoffset, width, height, format, type, pixels);
+}
+GLAPI void APIENTRY glCopyTexImage1DEXT(GLenum target, GLint level, GLenum internalformat, GLint x, GLint y,
+                                         GLsizei width, GLint border) {
+  glCopyTexImage1D(target, level, internalformat, x, y, width, border);
+}
+GLAPI void APIENTRY glCopyTexImage2DEXT(GLenum target, GLint level, GLenum internalformat, GLint x, GLint y,
+                                         GLsizei width, GLsizei height, GLint border) {
+  glCopyTexImage2D(target, level, internalformat, x, y, width, height, border);
+}
+GLAPI void APIENTRY glCopyTexSubImage1DEXT(GLenum target, GLint level, GLint xoffset, GLint x, GLint y,
+                                            GLsizei width) {
+  glCopyTexSubImage1D(target, level, xoffset, x, y, width);
+}
+GLAPI void APIENTRY glCopyTexSubImage2DEXT(GLenum target, GLint level, GLint xoffset, GLint yoffset, GLint x,
+                                            GLint y, GLsizei width, GLsizei height) {
+  glCopyTexSubImage2D(target, level, xoffset, yoffset, x, y, width, height);
+}
+GLAPI void APIENTRY glCopyTexSubImage3DEXT(GLenum target, GLint level, GLint xoffset, GLint yoffset, GLint zoffset,
+                                            GLint x, GLint y, GLsizei width, GLsizei height) {
+  glCopyTexSubImage3D(target, level, xoffset, yoffset, zoffset, x, y, width, height);
+}
+GLAPI GLboolean APIENTRY glAreTexturesResidentEXT(GLsizei n, const GLuint* textures, GLboolean* residences) {
+  return glAreTexturesResident(n, textures, residences);
+}
+GLAPI void APIENTRY glBindTextureEXT(GLenum target, GLuint texture) { glBindTexture(target, texture); }
+GLAPI void APIENTRY glDeleteTexturesEXT(GLsizei n, const GLuint* textures) { glDeleteTextures(n, textures); }
+GLAPI void APIENTRY glGenTexturesEXT(GLsizei n, GLuint* textures) { glGenTextures(n, textures); }
+GLAPI GLboolean APIENTRY glIsTextureEXT(GLuint texture) { return glIsTexture(texture); }
+GLAPI void APIENTRY glPrioritizeTexturesEXT(GLsizei n, const GLuint* textures, const GLclampf* priorities) {
+  glPrioritizeTextures(n, textures, priorities);
+}
+
 }  // extern "C"
 
 namespace glfixed::api {
@@ -115,6 +197,53 @@ const Alias kAliases[] = {
     GLFX_ALIAS(glNormalPointerEXT),       GLFX_ALIAS(glColorPointerEXT),
     GLFX_ALIAS(glIndexPointerEXT),        GLFX_ALIAS(glTexCoordPointerEXT),
     GLFX_ALIAS(glEdgeFlagPointerEXT),
+    GLFX_ALIAS(glMultiTexCoord1sARB),
+    GLFX_ALIAS(glMultiTexCoord1svARB),
+    GLFX_ALIAS(glMultiTexCoord1iARB),
+    GLFX_ALIAS(glMultiTexCoord1ivARB),
+    GLFX_ALIAS(glMultiTexCoord1fARB),
+    GLFX_ALIAS(glMultiTexCoord1fvARB),
+    GLFX_ALIAS(glMultiTexCoord1dARB),
+    GLFX_ALIAS(glMultiTexCoord1dvARB),
+    GLFX_ALIAS(glMultiTexCoord2sARB),
+    GLFX_ALIAS(glMultiTexCoord2svARB),
+    GLFX_ALIAS(glMultiTexCoord2iARB),
+    GLFX_ALIAS(glMultiTexCoord2ivARB),
+    GLFX_ALIAS(glMultiTexCoord2fARB),
+    GLFX_ALIAS(glMultiTexCoord2fvARB),
+    GLFX_ALIAS(glMultiTexCoord2dARB),
+    GLFX_ALIAS(glMultiTexCoord2dvARB),
+    GLFX_ALIAS(glMultiTexCoord3sARB),
+    GLFX_ALIAS(glMultiTexCoord3svARB),
+    GLFX_ALIAS(glMultiTexCoord3iARB),
+    GLFX_ALIAS(glMultiTexCoord3ivARB),
+    GLFX_ALIAS(glMultiTexCoord3fARB),
+    GLFX_ALIAS(glMultiTexCoord3fvARB),
+    GLFX_ALIAS(glMultiTexCoord3dARB),
+    GLFX_ALIAS(glMultiTexCoord3dvARB),
+    GLFX_ALIAS(glMultiTexCoord4sARB),
+    GLFX_ALIAS(glMultiTexCoord4svARB),
+    GLFX_ALIAS(glMultiTexCoord4iARB),
+    GLFX_ALIAS(glMultiTexCoord4ivARB),
+    GLFX_ALIAS(glMultiTexCoord4fARB),
+    GLFX_ALIAS(glMultiTexCoord4fvARB),
+    GLFX_ALIAS(glMultiTexCoord4dARB),
+    GLFX_ALIAS(glMultiTexCoord4dvARB),
+    GLFX_ALIAS(glTexImage3DEXT),
+    GLFX_ALIAS(glTexSubImage3DEXT),
+    GLFX_ALIAS(glTexSubImage1DEXT),
+    GLFX_ALIAS(glTexSubImage2DEXT),
+    GLFX_ALIAS(glCopyTexImage1DEXT),
+    GLFX_ALIAS(glCopyTexImage2DEXT),
+    GLFX_ALIAS(glCopyTexSubImage1DEXT),
+    GLFX_ALIAS(glCopyTexSubImage2DEXT),
+    GLFX_ALIAS(glCopyTexSubImage3DEXT),
+    GLFX_ALIAS(glAreTexturesResidentEXT),
+    GLFX_ALIAS(glBindTextureEXT),
+    GLFX_ALIAS(glDeleteTexturesEXT),
+    GLFX_ALIAS(glGenTexturesEXT),
+    GLFX_ALIAS(glIsTextureEXT),
+    GLFX_ALIAS(glPrioritizeTexturesEXT),
 };
 #undef GLFX_ALIAS
 }  // namespace

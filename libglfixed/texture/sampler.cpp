@@ -261,6 +261,13 @@ QuadLod quadLod(const SamplerView& v, const float* s, const float* t, const floa
 // ---- AoS sampling of one lane at one level: 8-bit RGBA ----
 
 void fetch8(const SamplerView& v, const TextureImage& img, int x, int y, int z, int out[4]) {
+  // The common formats read directly (the same values decodeTexelUnorm8 gives).
+  if (v.format == TexelFormat::RGBA8 || v.format == TexelFormat::RGBX8) {
+    const uint8_t* p = img.texels.data() + size_t(z) * img.imageStride + size_t(y) * img.rowStride + size_t(x) * 4;
+    out[0] = p[0], out[1] = p[1], out[2] = p[2];
+    out[3] = v.format == TexelFormat::RGBA8 ? p[3] : 255;
+    return;
+  }
   uint8_t c[4];
   decodeTexelUnorm8(v.format, img.texel(x, y, z), c);
   for (int k = 0; k < 4; ++k) out[k] = c[k];

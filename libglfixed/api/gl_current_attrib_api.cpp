@@ -17,7 +17,13 @@ constexpr int kMaxTextureCoords = 8;
 using api::normalized;
 
 void texCoord(GLenum unit, float s, float t, float r, float q) {
-  if (api::compiledAttribute(&glMultiTexCoord4f, unit, s, t, r, q)) return;
+  const bool validUnit = unit >= GL_TEXTURE0 && unit < GL_TEXTURE0 + kMaxTextureCoords;
+  if (validUnit &&
+      api::compiledVertexData(
+          [&](pipeline::ListCompiler& l) { l.texCoord(int(unit - GL_TEXTURE0), glm::vec4(s, t, r, q)); },
+          &glMultiTexCoord4f, unit, s, t, r, q))
+    return;
+  if (!validUnit && api::compiledAttribute(&glMultiTexCoord4f, unit, s, t, r, q)) return;
   Context* ctx = currentContext();
   if (!ctx) return;
   if (unit < GL_TEXTURE0 || unit >= GL_TEXTURE0 + kMaxTextureCoords) {

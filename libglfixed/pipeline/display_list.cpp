@@ -149,6 +149,7 @@ void ListCompiler::vertex(const glm::vec4& position) {
   v.color.push_back(color_);
   v.materialIndex.push_back(0);
   v.edgeFlag.push_back(edgeFlag_);  // polygon area
+  for (uint32_t m = v.texCoordUnits; m != 0; m &= m - 1) v.texCoord[__builtin_ctz(m)].push_back(texCoord_[__builtin_ctz(m)]);
 }
 
 // Polygon area: the edge flag joins the node's vertices without growing its
@@ -168,6 +169,15 @@ void ListCompiler::normal(const glm::vec3& n) {
   if (!node_->hasNormal) growFormat();
   node_->hasNormal = true;
   normal_ = n;
+}
+
+void ListCompiler::texCoord(int unit, const glm::vec4& c) {
+  const uint32_t bit = 1u << unit, before = node_->vertices.texCoordUnits;
+  if (!(before & bit)) {
+    growFormat();
+    node_->vertices.setTexCoordUnits(node_->vertices.texCoordUnits | before | bit);
+  }
+  texCoord_[unit] = c;
 }
 
 void ListCompiler::material(GLenum face, GLenum pname, const GLfloat* params, int count) {
@@ -388,6 +398,10 @@ void loopBackVertexNode(const VertexNode& node) {
       if (node.hasColor) glColor4fv(&v.color[i][0]);
       if (node.hasNormal) glNormal3fv(&v.normal[i][0]);
       if (node.hasEdgeFlag) glEdgeFlag(v.edgeFlag[i]);
+      for (uint32_t m = v.texCoordUnits; m != 0; m &= m - 1) {
+        const int u = __builtin_ctz(m);
+        glMultiTexCoord4fv(GL_TEXTURE0 + u, &v.texCoord[u][i][0]);
+      }
       glVertex4fv(&v.position[i][0]);
     }
     materialsUpTo(p.first + p.count);
@@ -421,6 +435,8 @@ void replayVertexNode(Context& ctx, VertexNode& node) {
     // The last vertex's attributes become current (Mesa's current_data).
     const VertexBatch& v = node.vertices;
     if (v.size() > 0 && node.updatesCurrent) {
+      for (uint32_t m = v.texCoordUnits; m != 0; m &= m - 1)
+        ctx.current.texCoord[__builtin_ctz(m)] = v.texCoord[__builtin_ctz(m)].back();
       if (node.hasNormal) ctx.current.normal = v.normal.back();
       if (node.hasEdgeFlag) ctx.current.edgeFlag = v.edgeFlag.back() != 0;
       if (node.hasColor) {

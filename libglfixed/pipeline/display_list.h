@@ -78,8 +78,9 @@ struct VertexNode {
   GLenum openMode = GL_POINTS;
   uint32_t openFirst = 0;
   std::vector<ListMaterialCall> materials;
-  // Other current-attribute calls between glBegin and glEnd (texture
-  // coordinates, ...): no stage reads them per vertex yet; run after the node.
+  // Other current-attribute calls between glBegin and glEnd (secondary
+  // colour, fog coordinate, ...): no stage reads them per vertex yet; run
+  // after the node.
   std::vector<ListCommand> attributeCalls;
   // A replay makes the last vertex's colour and normal current, unless the
   // node's last primitive came from an array draw (Mesa's no_current_update:
@@ -115,6 +116,9 @@ class ListCompiler {
   void color(const glm::vec4& c);
   void edgeFlag(bool flag);  // polygon area
   void normal(const glm::vec3& n);
+  // Texture coordinates of unit `unit` (0-based): they join the node's vertex
+  // format as a colour does.
+  void texCoord(int unit, const glm::vec4& c);
   void material(GLenum face, GLenum pname, const GLfloat* params, int count);
   void attributeCall(ListCommand call) { node_->attributeCalls.push_back(std::move(call)); }
   // glCallList between glBegin and glEnd in a list: the node ends and the rest
@@ -148,6 +152,7 @@ class ListCompiler {
   glm::vec4 color_{1, 1, 1, 1};
   bool edgeFlag_ = true;  // polygon area
   glm::vec3 normal_{0, 0, 1};
+  glm::vec4 texCoord_[kBatchTexCoordUnits];
   // The nodes a format growth ended inside the glBegin/glEnd that goes on in
   // node_: if a node of the chain is fed back on replay, they all must be.
   std::vector<std::shared_ptr<VertexNode>> grownChain_;

@@ -119,6 +119,14 @@ primitive::PrimitiveState primitiveState(const Context& ctx, GLenum mode, bool s
     const glm::vec3& a = p.distanceAttenuation;
     s.pointSizePerVertex = a.x != 1.0f || a.y != 0.0f || a.z != 0.0f;
     s.pointSmooth = p.smooth && !p.sprite;
+    // Point sprites (raster/point.cpp): st/mesa's point_quad_rasterization
+    // and sprite_coord_enable (st_atom_rasterizer.c).
+    r.pointSprite = p.sprite;
+    r.spriteCoordOrigin = p.spriteCoordOrigin;
+    r.spriteCoordReplace = 0;
+    if (p.sprite)
+      for (size_t u = 0; u < p.coordReplace.size() && u < size_t(raster::kMaxTexCoordUnits); ++u)
+        if (p.coordReplace[u]) r.spriteCoordReplace |= 1u << u;
   }
 
   // Lines (primitive/lines.cpp): Mesa's rasterizer state (st_atom_rasterizer.c).

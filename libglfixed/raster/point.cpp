@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cstdint>
 
+#include "primitive/point_sprite.h"
 #include "raster/fixed_point.h"
 #include "raster/interpolate.h"
 #include "raster/primitive_setup.h"
@@ -49,9 +50,21 @@ bool setupPoint(const RasterState& state, const Framebuffer& fb, const WindowVer
   // y one unit up for GL's bottom-left fill convention (llvmpipe's `adj`).
   const int64_t x0 = snapPoint(v.x);
   const int64_t y0 = int64_t(snapPoint(v.y)) - 1;
-  const int width = pointWidthInPixels(size);
-  int64_t bx, by;
-  if (width == 1) {
+  const int width = state.pointSprite ? 0 : pointWidthInPixels(size);
+  int64_t bx, by, bx1, by1;
+  if (state.pointSprite) {
+    // A sprite is a quad of the snapped size (lp_setup_point.c, not the
+    // legacy rules): [X0, X0 + w) across with the pixel centres at integer
+    // 1/256 multiples, the left edge in; down, (Y0, Y0 + w], the bottom edge
+    // in (GL's bottom-left rule in llvmpipe's y-down rows).
+    const int64_t fw = primitive::spriteFixedWidth(size);
+    const int64_t sx0 = int64_t(snapPoint(v.x - 0.5f)) - fw / 2,
+                  sy0 = int64_t(snapPoint(v.y - 0.5f)) - fw / 2;
+    bx = (sx0 + kFixedOne - 1) >> kSubpixelBits;
+    bx1 = ((sx0 + fw + kFixedOne - 1) >> kSubpixelBits) - 1;
+    by = (sy0 >> kSubpixelBits) + 1;
+    by1 = (sy0 + fw) >> kSubpixelBits;
+  } else if (width == 1) {
     bx = x0 >> kSubpixelBits;
     by = y0 >> kSubpixelBits;
   } else if (width & 1) {
@@ -61,14 +74,15 @@ bool setupPoint(const RasterState& state, const Framebuffer& fb, const WindowVer
     bx = ((x0 + kFixedOne / 2) >> kSubpixelBits) - width / 2;
     by = ((y0 + kFixedOne / 2) >> kSubpixelBits) - width / 2;
   }
+  if (!state.pointSprite) bx1 = bx + width - 1, by1 = by + width - 1;
   // The region cut to the buffer, GL window space (y up), in llvmpipe rows
   // (y down).
   const WindowRegion& region = state.pointLineRegion;
   const int64_t height = fb.height();
   const int64_t rx0 = std::max({bx, int64_t(region.x0), int64_t(0)}),
-                rx1 = std::min({bx + width - 1, int64_t(region.x1) - 1, int64_t(fb.width()) - 1});
+                rx1 = std::min({bx1, int64_t(region.x1) - 1, int64_t(fb.width()) - 1});
   const int64_t ry0 = std::max({by, height - region.y1, int64_t(0)});
-  const int64_t ry1 = std::min({by + width - 1, height - 1 - region.y0, height - 1});
+  const int64_t ry1 = std::min({by1, height - 1 - region.y0, height - 1});
   if (rx0 > rx1 || ry0 > ry1) return false;
   t.x0 = static_cast<int>(rx0);
   t.x1 = static_cast<int>(rx1);
@@ -94,7 +108,25 @@ bool setupPoint(const RasterState& state, const Framebuffer& fb, const WindowVer
   t.w = Plane{v.oneOverW, 0.0f, 0.0f};
   for (int k = 0; k < t.varyingCount; ++k) t.varying[k] = Plane{v.varying[k] * v.oneOverW, 0.0f, 0.0f};
   setTexCoordPlanes(
-      state, t, [&] { return t.w; }, [&](int k) { return Plane{v.varying[k] * v.oneOverW, 0.0f, 0.0f}; });
+      state, t, [&] { return t.w; },
+      [&](int k) {
+        return Plane{v.varying[k] * v.oneOverW, 0.0f, 0.0f};
+      });
+  // Sprite coordinates replace the units with GL_COORD_REPLACE: texture
+  // inputs are perspective in llvmpipe, so the planes are pre-multiplied by
+  // the point's 1/w, which the fragment stage divides back out (`w`).
+  if (state.pointSprite && state.spriteCoordReplace) {
+    const primitive::SpriteCoordPlanes p =
+        primitive::spriteCoordPlanes(v.x, v.y, size, state.spriteCoordOrigin, v.oneOverW, true);
+    const primitive::SpritePlane* c[4] = {&p.s, &p.t, &p.r, &p.q};
+    for (int u = 0; u < kMaxTexCoordUnits; ++u)
+      if (state.spriteCoordReplace & (1u << u)) {
+        for (int j = 0; j < 4; ++j)
+          t.varying[kTexCoordVarying + 4 * u + j] = Plane{c[j]->a0, c[j]->dadx, c[j]->dady};
+        t.texCoordUnits |= 1u << u;
+      }
+    t.w = Plane{v.oneOverW, 0.0f, 0.0f};
+  }
   return true;
 }
 

@@ -83,6 +83,13 @@ struct RasterState {
   // box when there is one, not in the viewport (a wide point or line spills
   // past the viewport edge); always further cut to the buffer.
   WindowRegion pointLineRegion;
+  // Point sprites (GL 2.0 §3.3.1; raster/point.cpp): GL_POINT_SPRITE makes
+  // llvmpipe draw points as quads of the snapped size (not legacy points);
+  // the units of spriteCoordReplace (bit u: GL_COORD_REPLACE) get the sprite
+  // coordinates, with GL_POINT_SPRITE_COORD_ORIGIN.
+  bool pointSprite = false;
+  uint32_t spriteCoordReplace = 0;
+  GLenum spriteCoordOrigin = GL_UPPER_LEFT;
 };
 
 // Snaps the three vertices to llvmpipe's 1/256 grid (fixed_point.h) and

@@ -109,7 +109,7 @@ constexpr Capability kTable[] = {
     entry(GL_LINE_SMOOTH, field<&Context::line, &LineAttrib::smooth>, GL_LINE_BIT, 0, kSettable),
     entry(GL_LINE_STIPPLE, field<&Context::line, &LineAttrib::stipple>, GL_LINE_BIT, 0, kSettable),
     entry(GL_POINT_SMOOTH, field<&Context::point, &PointAttrib::smooth>, GL_POINT_BIT, 0, kSettable),
-    entry(GL_POINT_SPRITE, field<&Context::point, &PointAttrib::sprite>, GL_POINT_BIT, 0, kHeld),
+    entry(GL_POINT_SPRITE, field<&Context::point, &PointAttrib::sprite>, GL_POINT_BIT, 0, kSettable),
     entry(GL_POLYGON_SMOOTH, field<&Context::polygon, &PolygonAttrib::smooth>, GL_POLYGON_BIT, 0, kHeld),
     // Polygon area: stipple and offset are drawn (primitive/unfilled.cpp, raster/).
     entry(GL_POLYGON_STIPPLE, field<&Context::polygon, &PolygonAttrib::stipple>, GL_POLYGON_BIT, 0,

@@ -127,8 +127,13 @@ float elementToFloat(uint32_t bits, GLenum type) {
   }
 }
 
-// The components of one group, in the order of `format`.
-void readComponents(const uint8_t* p, GLenum type, int components, bool swap, float c[4]) {
+// The components of one group, in the order of `format`. `replicate`: a
+// packed field narrower than 8 bits reads as its bits repeated to 8, over
+// 255 (Mesa converts such data to 8-bit storage unorm to unorm, by bit
+// replication: 5-bit 3 -> 24, 6-bit 49 -> 199; MESA_FACTS.md "Textures:
+// storage"); the stored value then comes out the same at 8 bits and at the
+// field's own width.
+void readComponents(const uint8_t* p, GLenum type, int components, bool swap, bool replicate, float c[4]) {
   const Packed packed = packedType(type);
   if (packed.bytes) {
     const uint32_t v = readElement(p, packed.bytes, swap);
@@ -138,7 +143,14 @@ void readComponents(const uint8_t* p, GLenum type, int components, bool swap, fl
       const int w = packed.width[i];
       const int shift = packed.reversed ? used : total - used - w;
       used += w;
-      c[i] = static_cast<float>((v >> shift) & ((1u << w) - 1)) / static_cast<float>((1u << w) - 1);
+      const uint32_t field = (v >> shift) & ((1u << w) - 1);
+      if (replicate && w < 8) {
+        uint32_t b = 0;
+        for (int s = 8 - w; s > -w; s -= w) b |= s >= 0 ? field << s : field >> -s;
+        c[i] = static_cast<float>(b & 255u) / 255.0f;
+      } else {
+        c[i] = static_cast<float>(field) / static_cast<float>((1u << w) - 1);
+      }
     }
     return;
   }
@@ -270,7 +282,7 @@ void unpackImage(const ClientLayout& layout, const uint8_t* pixels, GLenum forma
       for (int i = 0; i < width; ++i, out += info.bytesPerTexel) {
         float c[4] = {0, 0, 0, 0}, rgba[4];
         if (!layout.bitmap)
-          readComponents(row + size_t(i) * layout.groupBytes, type, components, layout.swapBytes, c);
+          readComponents(row + size_t(i) * layout.groupBytes, type, components, layout.swapBytes, !scaleBias, c);
         toRGBA(format, c, rgba);
         if (scaleBias) {  // §3.6.5: pixel transfer, then the clamp to [0, 1]
           if (isDepth) {

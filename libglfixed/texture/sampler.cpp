@@ -319,16 +319,39 @@ void fetchF(const SamplerView& v, const SamplerLevel& lv, const TextureImage& im
   decodeTexelFloat(v.format, img.texel(x, y, z), out);
 }
 
+// lp_build_sample_comparefunc: ref FUNC texel, ordered (false with a NaN)
+// except GL_NOTEQUAL, unordered (true with a NaN).
+bool compareDepth(GLenum func, float ref, float texel) {
+  switch (func) {
+    case GL_LEQUAL: return ref <= texel;
+    case GL_GEQUAL: return ref >= texel;
+    case GL_LESS: return ref < texel;
+    case GL_GREATER: return ref > texel;
+    case GL_EQUAL: return ref == texel;
+    case GL_NOTEQUAL: return !(ref == texel);
+    case GL_ALWAYS: return true;
+    default: return false;  // GL_NEVER
+  }
+}
+
+// A texel for filtering: with GL_COMPARE_R_TO_TEXTURE, channel 0 is the
+// comparison's 0 or 1 (linear filtering lerps the four results).
+void fetchTexel(const SamplerView& v, const SamplerLevel& lv, const TextureImage& img, int x, int y, int z,
+                float ref, float out[4]) {
+  fetchF(v, lv, img, x, y, z, out);
+  if (v.compare) out[0] = compareDepth(v.compareFunc, ref, out[0]) ? 1.0f : 0.0f;
+}
+
 // `snap`: a lane that wants the nearest filter inside llvmpipe's combined
 // min/mag path: its linear weights become 1 where above 0.5, else 0.
 void sampleSoa(const SamplerView& v, const SamplerLevel& lv, int face, GLenum filter, bool snap, float s,
-               float t, float r, float out[4]) {
+               float t, float r, float ref, float out[4]) {
   const TextureImage& img = *lv.face[face];
   if (filter == GL_NEAREST) {
     int x = soaNearest(s, lv.size[0], lv.sizeF[0], lv.pot[0], v.wrap[0]);
     int y = v.dims >= 2 ? soaNearest(t, lv.size[1], lv.sizeF[1], lv.pot[1], v.wrap[1]) : 0;
     int z = v.dims >= 3 ? soaNearest(r, lv.size[2], lv.sizeF[2], lv.pot[2], v.wrap[2]) : 0;
-    fetchF(v, lv, img, x, y, z, out);
+    fetchTexel(v, lv, img, x, y, z, ref, out);
     return;
   }
   LinearTap a = soaLinear(s, lv.size[0], lv.sizeF[0], lv.pot[0], v.wrap[0]);
@@ -346,11 +369,11 @@ void sampleSoa(const SamplerView& v, const SamplerLevel& lv, int face, GLenum fi
   for (int p = 0; p < planes; ++p) {
     int z = p ? c.i1 : c.i0;
     float t00[4], t01[4], t10[4], t11[4];
-    fetchF(v, lv, img, a.i0, b.i0, z, t00);
-    fetchF(v, lv, img, a.i1, b.i0, z, t01);
+    fetchTexel(v, lv, img, a.i0, b.i0, z, ref, t00);
+    fetchTexel(v, lv, img, a.i1, b.i0, z, ref, t01);
     if (v.dims >= 2) {
-      fetchF(v, lv, img, a.i0, b.i1, z, t10);
-      fetchF(v, lv, img, a.i1, b.i1, z, t11);
+      fetchTexel(v, lv, img, a.i0, b.i1, z, ref, t10);
+      fetchTexel(v, lv, img, a.i1, b.i1, z, ref, t11);
     }
     for (int k = 0; k < 4; ++k) {
       float row0 = lerpF(a.wf, t00[k], t01[k]);
@@ -505,6 +528,11 @@ bool makeSamplerView(const TextureObject& texture, GLenum target, float unitLodB
     out.applyMaxLod = !out.minMaxLodEqual && out.maxLod < 14.0f;  // PIPE_MAX_TEXTURE_LEVELS - 1
   }
 
+  out.depth = info.baseFormat == GL_DEPTH_COMPONENT;
+  out.depthTextureMode = p.depthTextureMode;
+  out.compare = out.depth && p.compareMode == GL_COMPARE_R_TO_TEXTURE;
+  out.compareFunc = p.compareFunc;
+
   auto simple = [](GLenum w) { return w == GL_REPEAT || w == GL_CLAMP_TO_EDGE; };
   // A per-pixel lod (cube maps with a mip filter) keeps the AoS path only
   // with equal min and mag filters.
@@ -524,12 +552,15 @@ void sampleBlock(const SamplerView& v, const Lanes& s, const Lanes& t, const Lan
   }
   // The projective division of the fixed-function shader's TXP: one
   // reciprocal (a division), then products.
-  float ps[kBlockLanes], pt[kBlockLanes], pr[kBlockLanes];
+  float ps[kBlockLanes], pt[kBlockLanes], pr[kBlockLanes], ref[kBlockLanes];
   for (int i = 0; i < kBlockLanes; ++i) {
     float rcp = 1.0f / q[i];
     ps[i] = s[i] * rcp;
     pt[i] = t[i] * rcp;
     pr[i] = r[i] * rcp;
+    // The reference value, r after the division, clamped to [0, 1] for the
+    // (unorm) depth formats (lp_build_sample_soa_code): max, then min.
+    ref[i] = std::min(std::max(pr[i], 0.0f), 1.0f);
   }
   // The level of detail of each lane: per quad, except cube maps with a mip
   // filter, where llvmpipe takes it per pixel.
@@ -634,11 +665,21 @@ void sampleBlock(const SamplerView& v, const Lanes& s, const Lanes& t, const Lan
       mip = allNearestMip;
     }
     float c0[4];
-    sampleSoa(v, v.levels[ql.level0], faces[i], filter, snap, ps[i], pt[i], pr[i], c0);
+    sampleSoa(v, v.levels[ql.level0], faces[i], filter, snap, ps[i], pt[i], pr[i], ref[i], c0);
     if (mip && v.mipFilter == GL_LINEAR && anyFraction) {
       float c1[4];
-      sampleSoa(v, v.levels[ql.level1], faces[i], filter, snap, ps[i], pt[i], pr[i], c1);
+      sampleSoa(v, v.levels[ql.level1], faces[i], filter, snap, ps[i], pt[i], pr[i], ref[i], c1);
       for (int k = 0; k < 4; ++k) c0[k] = lerpF(ql.fpart, c0[k], c1[k]);
+    }
+    if (v.depth) {
+      // The depth (or the comparison's result) in channel 0, through the
+      // sampler view's swizzle for GL_DEPTH_TEXTURE_MODE (st_sampler_view).
+      float d = c0[0];
+      switch (v.depthTextureMode) {
+        case GL_INTENSITY: c0[0] = c0[1] = c0[2] = c0[3] = d; break;
+        case GL_ALPHA: c0[0] = c0[1] = c0[2] = 0.0f, c0[3] = d; break;
+        default: c0[0] = c0[1] = c0[2] = d, c0[3] = 1.0f; break;  // GL_LUMINANCE
+      }
     }
     for (int k = 0; k < 4; ++k) out.c[k][i] = c0[k];
   }

@@ -42,6 +42,10 @@ struct SamplerView {
   float lodBias = 0, minLod = 0, maxLod = 1000;  // the gallium sampler's values
   int firstLevel = 0, lastLevel = 0;
   TexelFormat format = TexelFormat::RGBA8;
+  // A depth texture (ARB_depth_texture, ARB_shadow): its value, or with
+  // GL_COMPARE_R_TO_TEXTURE the comparison of r with it, through the mode.
+  bool depth = false, compare = false;
+  GLenum compareFunc = GL_LEQUAL, depthTextureMode = GL_LUMINANCE;
   SamplerLevel levels[kMaxTextureLevels];
 };
 

@@ -108,8 +108,7 @@ void decodeTexelFloat(TexelFormat format, const uint8_t* texel, float rgba[4]) {
   for (int i = 0; i < info.channels; ++i) {
     if (!info.bits[i]) continue;
     const uint32_t v = storedChannel(format, texel, i);
-    // unormToFloat's 1 << bits would overflow for 32 bits.
-    c[i] = info.bits[i] == 32 ? static_cast<float>(double(v) / 4294967295.0) : unormToFloat(v, info.bits[i]);
+    c[i] = info.bits[i] == 32 ? unorm32ToFloat(v) : unormToFloat(v, info.bits[i]);
   }
   expand<float>(info.baseFormat, c, 1.0f, rgba);
 }

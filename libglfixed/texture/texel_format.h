@@ -82,4 +82,12 @@ inline float unormToFloat(uint32_t value, int bits) {
   return static_cast<float>(value) * static_cast<float>(1.0 / static_cast<double>((1u << bits) - 1u));
 }
 
+// A 32-bit unsigned normalized value as llvmpipe's sampler converts it
+// (lp_build_unsigned_norm_to_float, wider than the mantissa): the top 23
+// bits as a fraction of 2^23 (exact), times the float nearest to
+// 2^23 / (2^23 - 1). 0xffffffff gives 1.0.
+inline float unorm32ToFloat(uint32_t value) {
+  return static_cast<float>(value >> 9) * (1.0f / 8388608.0f) * static_cast<float>(8388608.0 / 8388607.0);
+}
+
 }  // namespace glfixed::texture

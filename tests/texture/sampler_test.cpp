@@ -37,6 +37,8 @@ struct Case {
   int width = 64, height = 64;  // window
   GLenum target = GL_TEXTURE_2D;
   GLenum format = GL_RGBA;                 // upload format (internal format the same), GL_UNSIGNED_BYTE
+  // A depth texture: uploaded as GL_DEPTH_COMPONENT, GL_UNSIGNED_INT.
+  GLenum depthInternalFormat = 0;          // GL_DEPTH_COMPONENT16, 24 or 32
   std::vector<std::array<int, 3>> levels;  // sizes of levels 0..n-1
   SamplerParams params;
   float unitLodBias = 0;
@@ -46,6 +48,9 @@ struct Case {
 
 TexelFormat texelFormatOf(GLenum format) {
   switch (format) {
+    case GL_DEPTH_COMPONENT16: return TexelFormat::Z16;
+    case GL_DEPTH_COMPONENT24: return TexelFormat::Z24;
+    case GL_DEPTH_COMPONENT32: return TexelFormat::Z32;
     case GL_RGB: return TexelFormat::RGBX8;
     case GL_LUMINANCE: return TexelFormat::L8;
     case GL_ALPHA: return TexelFormat::A8;
@@ -78,15 +83,20 @@ std::vector<uint8_t> drawOnMesa(const Case& c, const std::vector<std::vector<uin
   put(in, c.width), put(in, c.height), put(in, c.target);
   int faces = c.target == GL_TEXTURE_CUBE_MAP ? 6 : 1;
   put(in, uint32_t(c.levels.size() * faces));
-  GLint internal = c.format == GL_INTENSITY ? GL_INTENSITY8 : GLint(c.format);
-  GLenum upload = c.format == GL_INTENSITY ? GL_LUMINANCE : c.format;
+  GLint internal = c.depthInternalFormat      ? GLint(c.depthInternalFormat)
+                   : c.format == GL_INTENSITY ? GL_INTENSITY8
+                                              : GLint(c.format);
+  GLenum upload = c.depthInternalFormat      ? GL_DEPTH_COMPONENT
+                  : c.format == GL_INTENSITY ? GL_LUMINANCE
+                                             : c.format;
+  GLenum type = c.depthInternalFormat ? GL_UNSIGNED_INT : GL_UNSIGNED_BYTE;
   for (int f = 0; f < faces; ++f)
     for (size_t l = 0; l < c.levels.size(); ++l) {
       const std::vector<uint8_t>& bytes = data[f * c.levels.size() + l];
       put(in, faces == 6 ? GL_TEXTURE_CUBE_MAP_POSITIVE_X + f : c.target);
       put(in, uint32_t(l)), put(in, uint32_t(internal));
       put(in, c.levels[l][0]), put(in, c.levels[l][1]), put(in, c.levels[l][2]);
-      put(in, upload), put(in, GL_UNSIGNED_BYTE), put(in, uint32_t(bytes.size()));
+      put(in, upload), put(in, type), put(in, uint32_t(bytes.size()));
       in.append(reinterpret_cast<const char*>(bytes.data()), bytes.size());
       in.append((4 - bytes.size() % 4) % 4, '\0');
     }
@@ -134,19 +144,40 @@ int compareWithMesa(const Case& c) {
   for (int f = 0; f < faces; ++f)
     for (size_t l = 0; l < c.levels.size(); ++l) {
       int w = c.levels[l][0], h = c.levels[l][1], d = c.levels[l][2];
-      int comps = componentsOf(c.format);
+      int comps = c.depthInternalFormat ? 4 : componentsOf(c.format);
       std::vector<uint8_t> bytes(size_t(w) * h * d * comps);
       for (uint8_t& b : bytes) b = uint8_t(rng());
       TextureImage& img = tex.face[f][l];
       img.width = w, img.height = h, img.depth = d;
-      img.internalFormat = c.format;
-      img.format = texelFormatOf(c.format);
+      img.internalFormat = c.depthInternalFormat ? c.depthInternalFormat : c.format;
+      img.format = texelFormatOf(img.internalFormat);
       int bpt = texelFormatInfo(img.format).bytesPerTexel;
       img.rowStride = size_t(w) * bpt, img.imageStride = img.rowStride * h;
       img.texels.assign(img.imageStride * d, 0);
-      for (int i = 0; i < w * h * d; ++i)
-        for (int k = 0; k < bpt; ++k)
-          img.texels[size_t(i) * bpt + k] = k < comps ? bytes[size_t(i) * comps + k] : 0;
+      if (c.depthInternalFormat) {
+        // Random depths whose low bits repeat the high ones, so that any
+        // conversion of the 32-bit upload to 16 or 24 bits stores x.
+        for (int i = 0; i < w * h * d; ++i) {
+          uint32_t v;
+          std::memcpy(&v, &bytes[size_t(i) * 4], 4);
+          uint32_t x = img.format == TexelFormat::Z16 ? v >> 16 : img.format == TexelFormat::Z24 ? v >> 8 : v;
+          // Some depths exactly 0 and 1: only they tell whether the reference is clamped.
+          uint32_t one = img.format == TexelFormat::Z16   ? 0xffffu
+                         : img.format == TexelFormat::Z24 ? 0xffffffu
+                                                          : ~0u;
+          if (i % 4 == 1) x = 0;
+          if (i % 4 == 2) x = one;
+          if (img.format == TexelFormat::Z16) v = x << 16 | x;
+          if (img.format == TexelFormat::Z24) v = x << 8 | x >> 16;
+          if (img.format == TexelFormat::Z32) v = x;
+          std::memcpy(&bytes[size_t(i) * 4], &v, 4);
+          std::memcpy(&img.texels[size_t(i) * bpt], &x, size_t(bpt));
+        }
+      } else {
+        for (int i = 0; i < w * h * d; ++i)
+          for (int k = 0; k < bpt; ++k)
+            img.texels[size_t(i) * bpt + k] = k < comps ? bytes[size_t(i) * comps + k] : 0;
+      }
       data.push_back(std::move(bytes));
     }
   std::vector<uint8_t> mesa = drawOnMesa(c, data);
@@ -174,7 +205,8 @@ int compareWithMesa(const Case& c) {
         for (int k = 0; k < 4; ++k) {
           // An incomplete texture disables the unit: the fragment keeps its colour (white).
           // GL_REPLACE keeps the fragment's colour of an alpha texture (table 3.22).
-          bool fragmentColour = !complete || (c.format == GL_ALPHA && k < 3);
+          GLenum base = c.depthInternalFormat ? c.params.depthTextureMode : c.format;
+          bool fragmentColour = !complete || (base == GL_ALPHA && k < 3);
           uint8_t ours = fragmentColour ? 255 : raster::colorToUnorm8(out.c[k][i]);
           if (ours != m[k] && reported++ < 8)
             ADD_FAILURE() << "pixel (" << px << ", " << row << ") channel " << k << ": mesa " << int(m[k])
@@ -400,6 +432,36 @@ TEST(SamplerMesa, CubeMapFaces) {
           Case c = mipmapped(GL_TEXTURE_CUBE_MAP, 16, 16, 1, minF, magF, wrap);
           c.s = d[0], c.t = d[1], c.r = d[2];
           SCOPED_TRACE(testing::Message() << "min " << minF << " mag " << magF << " wrap " << wrap);
+          pixels += compareWithMesa(c);
+        }
+  RecordProperty("pixels", pixels);
+}
+
+// Depth textures (GL_DEPTH_COMPONENT16/24/32): the depth itself and
+// GL_COMPARE_R_TO_TEXTURE with every function, nearest and linear, through
+// every GL_DEPTH_TEXTURE_MODE. r runs past [0, 1] (the reference is clamped)
+// and q varies (the reference is r / q).
+TEST(SamplerMesa, DepthTexturesCompareAndModes) {
+  const GLenum funcs[] = {GL_LEQUAL, GL_GEQUAL,   GL_LESS,   GL_GREATER,
+                          GL_EQUAL,  GL_NOTEQUAL, GL_ALWAYS, GL_NEVER};
+  int pixels = 0;
+  for (GLenum internal : {GL_DEPTH_COMPONENT16, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT32})
+    for (GLenum mode : {GL_LUMINANCE, GL_INTENSITY, GL_ALPHA})
+      for (GLenum filter : {GL_NEAREST, GL_LINEAR, GL_LINEAR_MIPMAP_LINEAR})
+        for (int f = -1; f < 8; ++f) {
+          if (mode != GL_LUMINANCE && f > 1) continue;
+          Case c = mipmapped2d(GL_RGBA, 16, filter, filter == GL_NEAREST ? GL_NEAREST : GL_LINEAR,
+                               GL_CLAMP_TO_EDGE);
+          c.width = c.height = 32;
+          c.depthInternalFormat = internal;
+          c.params.depthTextureMode = mode;
+          if (f >= 0) c.params.compareMode = GL_COMPARE_R_TO_TEXTURE, c.params.compareFunc = funcs[f];
+          c.s = {-0.125f, 1.0f / 32, 1.0f / 256};
+          c.t = {0.0625f, 1.0f / 512, 1.0f / 32};
+          c.r = {-0.25f, 1.0f / 64, 1.0f / 32};
+          c.q = {0.75f, 1.0f / 128, 1.0f / 64};
+          SCOPED_TRACE(testing::Message() << "internal " << internal << " mode " << mode << " filter "
+                                          << filter << " func " << (f >= 0 ? funcs[f] : 0));
           pixels += compareWithMesa(c);
         }
   RecordProperty("pixels", pixels);

@@ -153,6 +153,14 @@ TexelFormat chooseTexelFormat(GLint internalFormat, GLenum format, GLenum type) 
     case GL_RGBA2:
     case GL_RGBA4: return TexelFormat::RGBA4;
     case GL_RGB5_A1: return TexelFormat::RGB5A1;
+    case GL_SRGB:
+    case GL_SRGB8: return TexelFormat::SRGBX8;
+    case GL_SRGB_ALPHA:
+    case GL_SRGB8_ALPHA8: return TexelFormat::SRGBA8;
+    case GL_SLUMINANCE:
+    case GL_SLUMINANCE8: return TexelFormat::SL8;
+    case GL_SLUMINANCE_ALPHA:
+    case GL_SLUMINANCE8_ALPHA8: return TexelFormat::SL8A8;
     case GL_RGB10_A2: return TexelFormat::RGB10A2;
     case GL_RGBA12:
     case GL_RGBA16: return TexelFormat::RGBA16;

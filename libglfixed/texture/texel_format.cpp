@@ -3,6 +3,7 @@
 // texture/internal_format.cpp.
 #include "texture/texel_format.h"
 
+#include <cmath>
 #include <cstring>
 
 namespace glfixed::texture {
@@ -35,6 +36,10 @@ const TexelFormatInfo kInfo[] = {
     {2, false, GL_DEPTH_COMPONENT, 1, 2, {16, 0, 0, 0}},   // Z16
     {4, false, GL_DEPTH_COMPONENT, 1, 4, {24, 0, 0, 0}},   // Z24
     {4, false, GL_DEPTH_COMPONENT, 1, 4, {32, 0, 0, 0}},   // Z32
+    {4, true, GL_RGBA, 4, 1, {8, 8, 8, 8}, true},          // SRGBA8
+    {4, true, GL_RGB, 4, 1, {8, 8, 8, 0}, true},           // SRGBX8
+    {1, true, GL_LUMINANCE, 1, 1, {8, 0, 0, 0}, true},     // SL8
+    {2, true, GL_LUMINANCE_ALPHA, 2, 1, {8, 8, 0, 0}, true},  // SL8A8
 };
 static_assert(sizeof(kInfo) / sizeof(kInfo[0]) == static_cast<size_t>(TexelFormat::Count),
               "one row per TexelFormat");
@@ -48,6 +53,23 @@ uint8_t widenTo8(uint32_t v, int bits) {
   uint32_t out = 0;
   for (int shift = 8 - bits; shift > -bits; shift -= bits) out |= shift >= 0 ? v << shift : v >> -shift;
   return static_cast<uint8_t>(out);
+}
+
+// An sRGB-encoded 8-bit value decoded to linear the way llvmpipe does
+// (gallivm lp_build_srgb_to_linear): not the exact formula but v / (12.6 *
+// 255) up to 15 and above it a cubic in v / 255 (0.3012 x^3 + 0.6935 x^2 +
+// 0.0030 x + 0.0023, the 1/255 folded into the coefficients), in float.
+float srgbToLinear(uint32_t v) {
+  const float x = static_cast<float>(v);
+  if (x <= 15.0f) return x * (1.0f / (12.6f * 255.0f));
+  const float c0 = 0.0023f, c1 = float(double(0.0030f / 255.0f)), c2 = float(double(0.6935f / (255.0f * 255.0f))),
+              c3 = float(double(0.3012f / (255.0f * 255.0f * 255.0f)));
+  return ((c3 * x + c2) * x + c1) * x + c0;
+}
+
+// Whether stored channel i of an sRGB format is a colour (not alpha).
+bool isSrgbColour(const TexelFormatInfo& info, int i) {
+  return info.srgb && !((info.baseFormat == GL_RGBA && i == 3) || (info.baseFormat == GL_LUMINANCE_ALPHA && i == 1));
 }
 
 // The base format's mapping of stored channels c[0..] to RGBA (table 3.21).
@@ -98,7 +120,10 @@ void decodeTexelUnorm8(TexelFormat format, const uint8_t* texel, uint8_t rgba[4]
   const TexelFormatInfo& info = texelFormatInfo(format);
   uint8_t c[4] = {0, 0, 0, 0};
   for (int i = 0; i < info.channels; ++i)
-    if (info.bits[i]) c[i] = widenTo8(storedChannel(format, texel, i), info.bits[i]);
+    if (isSrgbColour(info, i))
+      c[i] = static_cast<uint8_t>(std::nearbyint(srgbToLinear(storedChannel(format, texel, i)) * 255.0f));
+    else if (info.bits[i])
+      c[i] = widenTo8(storedChannel(format, texel, i), info.bits[i]);
   expand<uint8_t>(info.baseFormat, c, 255, rgba);
 }
 
@@ -108,6 +133,10 @@ void decodeTexelFloat(TexelFormat format, const uint8_t* texel, float rgba[4]) {
   for (int i = 0; i < info.channels; ++i) {
     if (!info.bits[i]) continue;
     const uint32_t v = storedChannel(format, texel, i);
+    if (isSrgbColour(info, i)) {
+      c[i] = srgbToLinear(v);
+      continue;
+    }
     c[i] = info.bits[i] == 32 ? unorm32ToFloat(v) : unormToFloat(v, info.bits[i]);
   }
   expand<float>(info.baseFormat, c, 1.0f, rgba);

@@ -42,6 +42,13 @@ enum class TexelFormat : uint8_t {
   Z16,  // depth, one channel: 2 bytes
   Z24,  // 4 bytes, the value in the low 24 bits
   Z32,  // 4 bytes, 32-bit unsigned normalized
+  // sRGB-encoded 8-bit colour channels (alpha linear), decoded to linear
+  // when sampled (EXT_texture_sRGB; Mesa decodes them: MESA_FACTS.md
+  // "Textures: sampling").
+  SRGBA8,  // GL_SRGB_ALPHA, GL_SRGB8_ALPHA8
+  SRGBX8,  // GL_SRGB, GL_SRGB8
+  SL8,     // GL_SLUMINANCE, GL_SLUMINANCE8
+  SL8A8,   // GL_SLUMINANCE_ALPHA, GL_SLUMINANCE8_ALPHA8
   Count
 };
 
@@ -54,6 +61,7 @@ struct TexelFormatInfo {
   int channels;        // stored channels (an RGB format stores an unused fourth)
   int bytesPerChannel; // 1, 2 or 4
   uint8_t bits[4];     // the bits of each stored channel (0: unused)
+  bool srgb = false;   // colour channels (not alpha) are sRGB-encoded
 };
 
 // The component sizes glGetTexLevelParameter reports (GL_TEXTURE_RED_SIZE ...).

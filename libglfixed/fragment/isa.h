@@ -22,14 +22,17 @@ typedef int32_t I8 __attribute__((vector_size(32)));
 typedef int32_t I4 __attribute__((vector_size(16)));
 typedef uint16_t U16x4 __attribute__((vector_size(8)));
 
+// Always inlined, even unoptimized: a function taking or returning a vector
+// type has another calling convention in the AVX2 build than in the generic
+// one, so none may be called across them.
 #define GLFIXED_INLINE __attribute__((always_inline)) inline
 
-inline F8 load(const Lanes& l) {
+GLFIXED_INLINE F8 load(const Lanes& l) {
   F8 v;
   __builtin_memcpy(&v, l.v, sizeof v);
   return v;
 }
-inline void store(Lanes& l, F8 v) { __builtin_memcpy(l.v, &v, sizeof v); }
+GLFIXED_INLINE void store(Lanes& l, F8 v) { __builtin_memcpy(l.v, &v, sizeof v); }
 
 bool haveAvx2Fma();
 

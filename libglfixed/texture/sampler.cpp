@@ -82,12 +82,16 @@ inline int aosNearest(float coord, int len, float lenF, bool pot, GLenum wrap) {
   return std::clamp(ifloor(coord * lenF), 0, len - 1);  // GL_CLAMP_TO_EDGE
 }
 
+// v - 128 in 32-bit two's complement, wrapping as llvmpipe's vector integers
+// do (a far-off or NaN coordinate of a helper pixel rounds to INT32_MIN).
+inline int32_t minus128(int32_t v) { return static_cast<int32_t>(static_cast<uint32_t>(v) - 128u); }
+
 inline LinearTap aosLinear(float coord, int len, bool pot, GLenum wrap) {
   LinearTap tap;
   if (wrap == GL_REPEAT && !pot) {
     // fract of the normalized coordinate, times the size, times 256.
     float f = fract(coord) * static_cast<float>(len);
-    int32_t c = iround(f * 256.0f) - 128;
+    int32_t c = minus128(iround(f * 256.0f));
     tap.w8 = c & 255;
     c >>= 8;
     if (c < 0) c = len - 1;
@@ -97,7 +101,7 @@ inline LinearTap aosLinear(float coord, int len, bool pot, GLenum wrap) {
     return tap;
   }
   // The coordinate times (size << 8) as a float, rounded to 8 fraction bits.
-  int32_t c = iround(coord * static_cast<float>(len << 8)) - 128;
+  int32_t c = minus128(iround(coord * static_cast<float>(len << 8)));
   tap.w8 = c & 255;
   c >>= 8;
   if (wrap == GL_REPEAT) {

@@ -138,6 +138,18 @@ bool parameterValues(const TextureObject& o, GLenum pname, GLfloat v[4], int& co
   }
 }
 
+// glGetTexParameter's common part: the values of `pname` of the texture bound
+// to `target`; false (with the error recorded) when there are none.
+bool queriedValues(GLenum target, GLenum pname, GLfloat v[4], int& count, bool& isColor) {
+  Context* ctx = api::contextForQuery();
+  if (!ctx) return false;
+  TextureObject* object = boundForParameter(*ctx, target);
+  if (!object) return false;
+  if (parameterValues(*object, pname, v, count, isColor)) return true;
+  ctx->recordError(GL_INVALID_ENUM);
+  return false;
+}
+
 }  // namespace
 
 extern "C" {
@@ -182,27 +194,19 @@ GLAPI void APIENTRY glTexParameteriv(GLenum target, GLenum pname, const GLint* p
 }
 
 GLAPI void APIENTRY glGetTexParameterfv(GLenum target, GLenum pname, GLfloat* params) {
-  Context* ctx = api::contextForQuery();
-  if (!ctx) return;
-  TextureObject* object = boundForParameter(*ctx, target);
-  if (!object) return;
   GLfloat v[4];
   int count;
   bool isColor;
-  if (!parameterValues(*object, pname, v, count, isColor)) return ctx->recordError(GL_INVALID_ENUM);
+  if (!queriedValues(target, pname, v, count, isColor)) return;
   if (params)
     for (int i = 0; i < count; ++i) params[i] = v[i];
 }
 
 GLAPI void APIENTRY glGetTexParameteriv(GLenum target, GLenum pname, GLint* params) {
-  Context* ctx = api::contextForQuery();
-  if (!ctx) return;
-  TextureObject* object = boundForParameter(*ctx, target);
-  if (!object) return;
   GLfloat v[4];
   int count;
   bool isColor;
-  if (!parameterValues(*object, pname, v, count, isColor)) return ctx->recordError(GL_INVALID_ENUM);
+  if (!queriedValues(target, pname, v, count, isColor)) return;
   if (!params) return;
   for (int i = 0; i < count; ++i) {
     if (isColor) {  // §6.1.2: a colour maps [-1, 1] onto the integers

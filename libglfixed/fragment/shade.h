@@ -31,6 +31,9 @@ struct ShadeTarget {
   int depthWidth = 0;
   bool depthWrite = true;
   GLenum depthFunc = GL_LESS;
+  // The depth test after the colour (llvmpipe's late depth test, when the
+  // fragment's colour can discard it: the alpha test), else before it.
+  bool lateDepth = false;
   bool secondary = false;  // colour sum: add varyings 4..6 to 0..2 (GL 2.1 §3.9)
   // The polygon stipple the fragments pass (null: none): the setup's
   // (triangles), or the state's for every primitive while Mesa's stipple

@@ -15,10 +15,11 @@ namespace {
 using test::TestSurface;
 
 void shadeAll(const RasterState& st, TestSurface& s, const FixedTriangle& f, const WindowVertex* v,
-              const float* flat, bool avx2) {
+              const float* flat, bool avx2, bool lateDepth = false) {
   PrimitiveSetup t;
   if (!setupTriangle(st, s.fb, f, v[0], v[1], v[2], flat, t)) return;
-  const fragment::ShadeTarget target = fragment::makeShadeTarget(st, s.fb, t);
+  fragment::ShadeTarget target = fragment::makeShadeTarget(st, s.fb, t);
+  target.lateDepth = lateDepth;
   if (avx2)
     fragment::shadePrimitiveAvx2(t, target);
   else
@@ -71,13 +72,50 @@ TEST(Shade, Avx2MatchesGeneric) {
         snapTriangle(v[0], v[1], v[2], f);
       }
       const float* flat = iter % 3 == 1 ? v[2].varying : nullptr;
-      shadeAll(st, a, f, v, flat, false);
-      shadeAll(st, b, f, v, flat, true);
+      shadeAll(st, a, f, v, flat, false, iter % 6 == 5);
+      shadeAll(st, b, f, v, flat, true, iter % 6 == 5);
     }
     ASSERT_EQ(a.pixels, b.pixels) << "iteration " << iter;
     for (int y = 0; y < 40; ++y)
       for (int x = 0; x < 40; ++x) ASSERT_EQ(a.fb.depth.get(x, y), b.fb.depth.get(x, y)) << iter;
   }
+}
+
+// Where nothing discards, the depth test after the colour (lateDepth) gives
+// what the test before it gives, colour write masks and no colour included.
+TEST(Shade, LateDepthTestMatchesEarly) {
+  std::mt19937 rng(9);
+  const GLenum funcs[] = {GL_LESS, GL_LEQUAL, GL_EQUAL, GL_GREATER, GL_GEQUAL, GL_NOTEQUAL, GL_ALWAYS, GL_NEVER};
+  size_t drawn = 0;
+  for (int iter = 0; iter < 200; ++iter) {
+    const int depthBits = iter % 3 == 0 ? 16 : 24;
+    TestSurface a(40, 40, depthBits), b(40, 40, depthBits);
+    RasterState st = a.state();
+    st.depthTest = true;
+    st.depthFunc = funcs[iter % 8];
+    st.depthWrite = iter % 5 != 0;
+    if (iter % 7 == 0) st.colorWrite[iter % 4] = false;
+    if (iter % 13 == 0)
+      for (bool& w : st.colorWrite) w = false;
+    for (int tri = 0; tri < 4; ++tri) {
+      WindowVertex v[3];
+      randomVertices(rng, v);
+      FixedTriangle f;
+      const int sign = snapTriangle(v[0], v[1], v[2], f);
+      if (sign == 0) continue;
+      if (sign < 0) {
+        std::swap(v[0], v[1]);
+        snapTriangle(v[0], v[1], v[2], f);
+      }
+      shadeAll(st, a, f, v, nullptr, false, false);
+      shadeAll(st, b, f, v, nullptr, false, true);
+    }
+    ASSERT_EQ(a.pixels, b.pixels) << "iteration " << iter;
+    for (int y = 0; y < 40; ++y)
+      for (int x = 0; x < 40; ++x) ASSERT_EQ(a.fb.depth.get(x, y), b.fb.depth.get(x, y)) << iter;
+    for (auto p : a.pixels) drawn += p != 0;
+  }
+  EXPECT_GT(drawn, 0u);  // the triangles drew something
 }
 
 // Lines: the line set-up's quadrilaterals, and triangles carrying a smooth

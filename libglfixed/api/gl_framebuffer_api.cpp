@@ -22,17 +22,10 @@ namespace {
 // converted as a fragment's depth (probed: 0.1 gives 0x199999, 1/3 0x555554).
 PixelBox clearBox(const Context& ctx, bool* byQuad) {
   const Framebuffer& fb = ctx.framebuffer;
-  PixelBox box{0, 0, fb.width(), fb.height()};
   const ScissorAttrib& s = ctx.scissor;
   *byQuad = s.test && (s.x > 0 || s.y > 0 || static_cast<long long>(s.x) + s.width < fb.width() ||
                        static_cast<long long>(s.y) + s.height < fb.height());
-  if (s.test) {
-    box.x0 = std::max(box.x0, s.x);
-    box.y0 = std::max(box.y0, s.y);
-    box.x1 = static_cast<int>(std::min<long long>(box.x1, static_cast<long long>(s.x) + s.width));
-    box.y1 = static_cast<int>(std::min<long long>(box.y1, static_cast<long long>(s.y) + s.height));
-  }
-  return box;
+  return scissoredBox(fb, s);
 }
 
 uint32_t quadClearDepth(double clearDepth, int bits) {
@@ -70,6 +63,11 @@ GLAPI void APIENTRY glClear(GLbitfield mask) {
     clearColor(fb.color, ctx->colorBuffer, box);
     if (fb.drawsIntoBoth(ctx->colorBuffer.drawBuffer))
       clearColor(fb.front, ctx->colorBuffer, box);
+  }
+  if (mask & GL_ACCUM_BUFFER_BIT) {
+    const glm::vec4& c = ctx->accum.clearValue;
+    const float value[4] = {c.r, c.g, c.b, c.a};
+    fb.accum.clear(box, value);
   }
   if ((mask & GL_DEPTH_BUFFER_BIT) && ctx->depth.writeMask && fb.depth.bits() > 0) {
     if (byQuad)

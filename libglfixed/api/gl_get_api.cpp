@@ -245,8 +245,10 @@ bool queryCoreState(Context& ctx, GLenum pname, StateValue& out) {
     case GL_RED_BITS: case GL_GREEN_BITS: case GL_BLUE_BITS: out.set({8.0}); return true;
     case GL_ALPHA_BITS: out.set({hasAlpha ? 8.0 : 0.0}); return true;
     case GL_DEPTH_BITS: out.set({double(fb.depth.bits())}); return true;
-    case GL_STENCIL_BITS: case GL_INDEX_BITS: case GL_AUX_BUFFERS:
     case GL_ACCUM_RED_BITS: case GL_ACCUM_GREEN_BITS: case GL_ACCUM_BLUE_BITS: case GL_ACCUM_ALPHA_BITS:
+      out.set({fb.accum.present() ? 16.0 : 0.0});
+      return true;
+    case GL_STENCIL_BITS: case GL_INDEX_BITS: case GL_AUX_BUFFERS:
       out.set({0.0});
       return true;
     case GL_RGBA_MODE: out.set({1.0}); return true;

@@ -11,6 +11,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "framebuffer/accum_buffer.h"
+
 namespace glfixed {
 
 // kBGRX: the 32-bit pixels of a depth-24 X11 TrueColor image (blue, green,
@@ -101,6 +103,7 @@ struct Framebuffer {
   // GL_NONE. Every stage draws into `color`; glReadPixels reads `read`.
   ColorBuffer color, read;
   DepthBuffer depth;
+  AccumBuffer accum;
   SurfaceHooks* surface = nullptr;      // the draw surface; null for OSMesa
   SurfaceHooks* readSurface = nullptr;  // the read surface
 

@@ -12,6 +12,17 @@ void clearDepth(Framebuffer& fb, uint32_t value, const PixelBox& box) {
     for (int x = std::max(box.x0, 0); x < std::min(box.x1, fb.depth.width()); ++x) fb.depth.set(x, y, value);
 }
 
+PixelBox scissoredBox(const Framebuffer& fb, const ScissorAttrib& s) {
+  PixelBox box{0, 0, fb.width(), fb.height()};
+  if (s.test) {
+    box.x0 = std::max(box.x0, s.x);
+    box.y0 = std::max(box.y0, s.y);
+    box.x1 = static_cast<int>(std::min<long long>(box.x1, static_cast<long long>(s.x) + s.width));
+    box.y1 = static_cast<int>(std::min<long long>(box.y1, static_cast<long long>(s.y) + s.height));
+  }
+  return box;
+}
+
 void clearColor(const ColorBuffer& c, const ColorBufferAttrib& cb, const PixelBox& box) {
   if (!c.pixels) return;
   uint8_t value[4];

@@ -6,6 +6,7 @@
 #include <cstddef>
 
 #include "framebuffer/framebuffer.h"
+#include "state/attrib_groups.h"
 #include "state/attribs.h"
 
 namespace glfixed {
@@ -14,6 +15,10 @@ namespace glfixed {
 struct PixelBox {
   int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
 };
+
+// The pixels of the framebuffer inside the scissor box when the scissor test
+// is on (GL 2.1 §4.1.2): what glClear and glAccum touch.
+PixelBox scissoredBox(const Framebuffer& fb, const ScissorAttrib& scissor);
 
 // glClear of the colour buffer: the pixels of `box` (inside the buffer),
 // honouring the colour write mask.

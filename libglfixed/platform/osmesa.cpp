@@ -91,7 +91,9 @@ GLAPI OSMesaContext APIENTRY OSMesaCreateContextExt(GLenum format, GLint depthBi
     return nullptr;
   }
   osmesa_context* c = new (std::nothrow) osmesa_context(f, depthBitsFor(depthBits, stencilBits));
-  if (c && sharelist) c->context.shareObjectsWith(sharelist->context);
+  if (!c) return nullptr;
+  c->context.requestedAccum = accumBits > 0;
+  if (sharelist) c->context.shareObjectsWith(sharelist->context);
   return c;
 }
 
@@ -159,6 +161,9 @@ GLAPI GLboolean APIENTRY OSMesaMakeCurrent(OSMesaContext ctx, void* buffer, GLen
   glfixed::DepthBuffer& depth = ctx->context.framebuffer.depth;
   if (depth.width() != width || depth.height() != height || depth.bits() != ctx->context.requestedDepthBits)
     depth.resize(width, height, ctx->context.requestedDepthBits);
+  glfixed::AccumBuffer& accum = ctx->context.framebuffer.accum;
+  if (accum.width() != width || accum.height() != height || accum.present() != ctx->context.requestedAccum)
+    accum.resize(width, height, ctx->context.requestedAccum);
   ctx->context.sizeToFirstSurface(width, height, false);  // OSMesa buffers are single-buffered
   tCurrent = ctx;
   glfixed::setCurrentContext(&ctx->context);

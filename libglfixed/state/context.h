@@ -91,6 +91,9 @@ class Context {
 
   Framebuffer framebuffer;
   int requestedDepthBits;
+  // An accumulation buffer (OSMesaCreateContextExt's accumBits > 0); Mesa's
+  // always has 16 bits a channel.
+  bool requestedAccum = false;
   bool viewportInitialized = false;  // the first MakeCurrent sets the viewport
   // At the context's first surface (unless glViewport came first): the
   // viewport and scissor box take its size (GL 2.1 §2.11.1, §4.1.2), and the

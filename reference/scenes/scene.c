@@ -70,6 +70,9 @@ static unsigned int read_depth_value(const unsigned char *p, int bytes)
 int scene_width(void) { return S.width; }
 int scene_height(void) { return S.height; }
 
+static int g_accum_bits;
+void scene_set_accum_bits(int bits) { g_accum_bits = bits; }
+
 void scene_begin(int argc, char **argv, int width, int height)
 {
     scene_options o;
@@ -131,7 +134,7 @@ int scene_begin_try(int argc, char **argv, const scene_options *opts)
     if (!S.buffer) fail("out of memory");
     memset(S.buffer, CANARY, S.buffer_bytes + GUARD_BYTES);
 
-    S.ctx = OSMesaCreateContextExt(S.ctx_format, depth_bits, 0, 0, NULL);
+    S.ctx = OSMesaCreateContextExt(S.ctx_format, depth_bits, 0, g_accum_bits, NULL);
     if (!S.ctx) {
         S.refused = "create";
         return -1;
@@ -196,7 +199,7 @@ static void write_info_line(FILE *f, int readpixels)
     static const struct { GLenum e; const char *n; } gl_ints[] = {
         { GL_RED_BITS, "red_bits" }, { GL_GREEN_BITS, "green_bits" },
         { GL_BLUE_BITS, "blue_bits" }, { GL_ALPHA_BITS, "alpha_bits" },
-        { GL_DEPTH_BITS, "depth_bits" }, { GL_STENCIL_BITS, "stencil_bits" },
+        { GL_DEPTH_BITS, "depth_bits" }, { GL_STENCIL_BITS, "stencil_bits" }, { GL_ACCUM_RED_BITS, "accum_bits" },
     };
     static const struct { GLint e; const char *n; } os_ints[] = {
         { OSMESA_WIDTH, "osmesa_width" }, { OSMESA_HEIGHT, "osmesa_height" },

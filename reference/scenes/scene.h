@@ -79,6 +79,8 @@ typedef struct {
 
 /* RGBA, 24-bit depth, y_up default. */
 void scene_begin(int argc, char **argv, int width, int height);
+/* Before scene_begin*: the accumulation bits OSMesaCreateContextExt is asked for (default 0). */
+void scene_set_accum_bits(int bits);
 /* Creates the context (OSMesaCreateContextExt), mallocs the client buffer
  * (row_length pixels per row), OSMesaMakeCurrent(GL_UNSIGNED_BYTE),
  * OSMesaPixelStore as asked, glViewport(0,0,w,h), scene_clear().

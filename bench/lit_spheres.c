@@ -4,7 +4,9 @@
  * vertices in one buffer object drawn with glMultiDrawArrays ("vbo"),
  * full-screen lit quads for fill ("fill"), and the same quads under a
  * trilinear (GL_LINEAR_MIPMAP_LINEAR) GL_MODULATE texture ("texfill"; 1.5
- * texels a pixel, so every pixel blends two levels). Built against Mesa's
+ * texels a pixel, so every pixel blends two levels), and the same quads
+ * blended, SRC_ALPHA / ONE_MINUS_SRC_ALPHA with a diffuse alpha of 0.5
+ * ("blendfill": every pixel reads the buffer). Built against Mesa's
  * headers; run on Mesa and on the drop-in by bench/run_bench.sh. Prints ms
  * per frame. */
 #define GL_GLEXT_PROTOTYPES 1
@@ -143,12 +145,19 @@ int main(int argc, char **argv) {
         glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
         glEnable(GL_TEXTURE_2D);
     }
+    const int blendfill = strcmp(what, "blendfill") == 0;
+    if (blendfill) {  /* translucent lit quads over each other */
+        const GLfloat diffuse[4] = {0.8f, 0.6f, 0.4f, 0.5f};
+        glMaterialfv(GL_FRONT_AND_BACK, GL_DIFFUSE, diffuse);
+        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        glEnable(GL_BLEND);
+    }
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     glFinish();
     double t1 = now();
     for (int f = 0; f < frames; f++) {
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-        if (strcmp(what, "fill") == 0 || texfill) {
+        if (strcmp(what, "fill") == 0 || texfill || blendfill) {
             for (int q = 0; q < 8; q++) {  /* 8 full-screen lit quads, back to front */
                 /* texfill: s and t run over 3 texture widths across the 512 pixels (the
                  * window is 6 - z units wide at the quad's depth), shifted per quad */

@@ -9,8 +9,8 @@ frames="${2:-20}"
 exe="$build/bench/bench_lit_spheres"
 declare -A ms
 # texfill: the fill quads under a trilinear (GL_LINEAR_MIPMAP_LINEAR) texture
-# (issue 14); its ratio means something only once libglfixed textures.
-for what in geometry list vbo fill texfill; do
+# (issue 14). blendfill: the fill quads blended (SRC_ALPHA, ONE_MINUS_SRC_ALPHA).
+for what in geometry list vbo fill texfill blendfill; do
   mesa=$(env -u LD_LIBRARY_PATH "$exe" "$frames" "$what")
   ours=$(LD_LIBRARY_PATH="$build/dropin" "$exe" "$frames" "$what")
   echo "Mesa       $mesa"

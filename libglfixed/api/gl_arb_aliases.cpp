@@ -166,6 +166,15 @@ GLAPI void APIENTRY glPrioritizeTexturesEXT(GLsizei n, const GLuint* textures, c
   glPrioritizeTextures(n, textures, priorities);
 }
 
+// Blending (api/gl_blend_api.cpp): EXT_blend_color, EXT_blend_minmax,
+// EXT/INGR_blend_func_separate, EXT/ATI_blend_equation_separate.
+GLAPI void APIENTRY glBlendColorEXT(GLfloat red, GLfloat green, GLfloat blue, GLfloat alpha);
+GLAPI void APIENTRY glBlendEquationEXT(GLenum mode);
+GLAPI void APIENTRY glBlendFuncSeparateEXT(GLenum srcRGB, GLenum dstRGB, GLenum srcAlpha, GLenum dstAlpha);
+GLAPI void APIENTRY glBlendFuncSeparateINGR(GLenum srcRGB, GLenum dstRGB, GLenum srcAlpha, GLenum dstAlpha);
+GLAPI void APIENTRY glBlendEquationSeparateEXT(GLenum modeRGB, GLenum modeAlpha);
+GLAPI void APIENTRY glBlendEquationSeparateATI(GLenum modeRGB, GLenum modeAlpha);
+
 }  // extern "C"
 
 namespace glfixed::api {
@@ -244,6 +253,9 @@ const Alias kAliases[] = {
     GLFX_ALIAS(glGenTexturesEXT),
     GLFX_ALIAS(glIsTextureEXT),
     GLFX_ALIAS(glPrioritizeTexturesEXT),
+    GLFX_ALIAS(glBlendColorEXT),          GLFX_ALIAS(glBlendEquationEXT),
+    GLFX_ALIAS(glBlendFuncSeparateEXT),   GLFX_ALIAS(glBlendFuncSeparateINGR),
+    GLFX_ALIAS(glBlendEquationSeparateEXT), GLFX_ALIAS(glBlendEquationSeparateATI),
 };
 #undef GLFX_ALIAS
 }  // namespace

@@ -105,9 +105,11 @@ bool queryHeldState(Context& ctx, GLenum pname, StateValue& out) {
     case GL_BLEND_DST_ALPHA: out.set({double(cb.blendDstAlpha)}); return true;
     case GL_BLEND_EQUATION_RGB: out.set({double(cb.blendEquationRGB)}); return true;
     case GL_BLEND_EQUATION_ALPHA: out.set({double(cb.blendEquationAlpha)}); return true;
-    case GL_BLEND_COLOR: {
+    case GL_BLEND_SRC: out.set({double(cb.blendSrcRGB)}); return true;
+    case GL_BLEND_DST: out.set({double(cb.blendDstRGB)}); return true;
+    case GL_BLEND_COLOR: {  // clamped, as Mesa reports it for fixed-point buffers
       const glm::vec4& c = cb.blendColor;
-      out.set({c.r, c.g, c.b, c.a}, Kind::kNormalized);
+      out.set({api::clamp01(c.r), api::clamp01(c.g), api::clamp01(c.b), api::clamp01(c.a)}, Kind::kNormalized);
       return true;
     }
     case GL_LOGIC_OP_MODE: out.set({double(cb.logicOpMode)}); return true;

@@ -4,7 +4,8 @@
 //
 // GL 2.0 needs GLSL, which the library does not have: the version is 1.5,
 // the last one without shaders. Fog, blending, stencil and the pixel
-// rectangles of GL 1.0-1.4 come later (issue 15).
+// rectangles of GL 1.0-1.4 come later (issue 15); blending and the logic op
+// are here (fragment/blend.inc).
 // The extensions listed are those whose every command and enum works.
 #pragma once
 
@@ -20,12 +21,14 @@ constexpr const char* kGLExtensionsString =
     "GL_ARB_shadow GL_ARB_texture_border_clamp "
     "GL_ARB_texture_cube_map GL_ARB_texture_env_add GL_ARB_texture_env_combine GL_ARB_texture_env_crossbar "
     "GL_ARB_texture_env_dot3 GL_ARB_texture_mirrored_repeat GL_ARB_texture_non_power_of_two "
-    "GL_ARB_transpose_matrix GL_ARB_vertex_buffer_object GL_EXT_bgra GL_EXT_copy_texture "
+    "GL_ARB_transpose_matrix GL_ARB_vertex_buffer_object GL_ATI_blend_equation_separate GL_EXT_bgra "
+    "GL_EXT_blend_color GL_EXT_blend_equation_separate GL_EXT_blend_func_separate GL_EXT_blend_minmax "
+    "GL_EXT_blend_subtract GL_EXT_copy_texture "
     "GL_EXT_draw_range_elements GL_EXT_multi_draw_arrays GL_EXT_packed_pixels GL_EXT_point_parameters "
     "GL_EXT_provoking_vertex GL_EXT_rescale_normal GL_EXT_separate_specular_color GL_EXT_subtexture "
     "GL_EXT_texture GL_EXT_texture3D GL_EXT_texture_edge_clamp GL_EXT_texture_env_add "
     "GL_EXT_texture_env_combine GL_EXT_texture_env_dot3 GL_EXT_texture_lod_bias GL_EXT_texture_object "
-    "GL_EXT_vertex_array GL_SGIS_generate_mipmap GL_SGIS_texture_border_clamp GL_SGIS_texture_edge_clamp "
+    "GL_EXT_vertex_array GL_INGR_blend_func_separate GL_NV_blend_square GL_SGIS_generate_mipmap GL_SGIS_texture_border_clamp GL_SGIS_texture_edge_clamp "
     "GL_SGIS_texture_lod ";  // a space after the last name, as Mesa's (piglit's glinfo prints it as it is)
 
 // True if a context of version major.minor can be had (the library's own

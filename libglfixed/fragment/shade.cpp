@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <cstring>
 
+#include "fragment/blend_state.h"
 #include "fragment/isa.h"
 #include "fragment/texture_stage.h"
 #include "raster/depth.h"
@@ -22,6 +23,7 @@
 namespace glfixed::fragment {
 namespace generic {
 #define GLFIXED_BLOCK_AVX2 0
+#include "fragment/blend.inc"
 #include "fragment/block_shader.inc"
 #undef GLFIXED_BLOCK_AVX2
 }  // namespace generic
@@ -30,6 +32,7 @@ namespace generic {
 #pragma GCC target("avx2,fma")
 namespace avx2 {
 #define GLFIXED_BLOCK_AVX2 1
+#include "fragment/blend.inc"
 #include "fragment/block_shader.inc"
 #undef GLFIXED_BLOCK_AVX2
 }  // namespace avx2
@@ -70,6 +73,7 @@ ShadeTarget makeShadeTarget(const raster::RasterState& state, Framebuffer& fb, c
   s.secondary = t.varyingCount == 8;
   s.stipple = t.stipple ? t.stipple : (state.stippleEveryPrimitive ? state.polygonStipple : nullptr);
   s.textures = state.textures && state.textures->unitCount > 0 ? state.textures : nullptr;
+  s.blend = state.blend;
   return s;
 }
 

@@ -8,6 +8,7 @@
 
 #include <cstdint>
 
+#include "fragment/blend_state.h"
 #include "framebuffer/framebuffer.h"
 #include "raster/primitive_setup.h"
 #include "raster/raster.h"
@@ -41,9 +42,12 @@ struct ShadeTarget {
   const uint32_t* stipple = nullptr;
   // Texturing and the texture environments (null: no unit textures).
   const TextureStage* textures = nullptr;
+  // Blending or the logic op (GL 2.1 §4.1.8, §4.1.10), before the colour mask.
+  BlendState blend;
 };
 
-ShadeTarget makeShadeTarget(const raster::RasterState& state, Framebuffer& fb, const raster::PrimitiveSetup& t);
+ShadeTarget makeShadeTarget(const raster::RasterState& state, Framebuffer& fb,
+                            const raster::PrimitiveSetup& t);
 
 // Shades every fragment of the primitive (the AVX2 build of the block shader
 // where the CPU has it, else the generic one: the same bits).

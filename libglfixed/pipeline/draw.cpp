@@ -85,6 +85,13 @@ primitive::PrimitiveState primitiveState(const Context& ctx, GLenum mode, bool s
   r.depthFunc = ctx.depth.func;
   r.depthWrite = ctx.depth.writeMask;
   for (int i = 0; i < 4; ++i) r.colorWrite[i] = ctx.colorBuffer.writeMask[i];
+  {
+    const ColorBufferAttrib& cb = ctx.colorBuffer;
+    const float color[4] = {cb.blendColor.r, cb.blendColor.g, cb.blendColor.b, cb.blendColor.a};
+    r.blend = fragment::makeBlendState(cb.blend, cb.blendSrcRGB, cb.blendDstRGB, cb.blendSrcAlpha, cb.blendDstAlpha,
+                                       cb.blendEquationRGB, cb.blendEquationAlpha, color, cb.colorLogicOp,
+                                       cb.logicOpMode);
+  }
   r.varyingCount = separateSpecular ? 8 : 4;
   r.scissorX0 = std::max(0, ctx.viewport.x);
   r.scissorY0 = std::max(0, ctx.viewport.y);

@@ -4,6 +4,7 @@
 
 #include <GL/gl.h>
 
+#include "fragment/blend_state.h"
 #include "framebuffer/framebuffer.h"
 #include "raster/edge.h"
 
@@ -90,6 +91,8 @@ struct RasterState {
   bool pointSprite = false;
   uint32_t spriteCoordReplace = 0;
   GLenum spriteCoordOrigin = GL_UPPER_LEFT;
+  // Blending or the logic op before the colour write (fragment/blend.inc).
+  fragment::BlendState blend;
 };
 
 // Snaps the three vertices to llvmpipe's 1/256 grid (fixed_point.h) and

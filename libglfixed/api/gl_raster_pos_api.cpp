@@ -403,3 +403,71 @@ GLAPI void APIENTRY glRasterPos4dv(const GLdouble* v) {
 }
 
 }  // extern "C"
+
+// glWindowPos (GL 1.4 §2.13): the raster position set in window coordinates,
+// without transformation or clipping, always valid; z mapped through
+// glDepthRange; the colour, secondary colour and texture coordinates the
+// current ones (Mesa's window_pos3f clamps the colours to [0, 1]).
+namespace {
+
+float clamp01f(float v) { return v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f; }  // NaN -> 0
+
+void windowPos(float x, float y, float z) {
+  if (api::compiled(&windowPos, x, y, z)) return;
+  Context* ctx = api::contextFlushed();
+  if (!ctx) return;
+  RasterPosState& rp = ctx->rasterPos;
+  const float n = static_cast<float>(api::clamp01(ctx->viewport.depthNear)),
+              f = static_cast<float>(api::clamp01(ctx->viewport.depthFar));
+  rp.position = glm::vec4(x, y, clamp01f(z) * (f - n) + n, 1.0f);
+  rp.distance = 0.0f;
+  for (int k = 0; k < 4; ++k) {
+    rp.color[k] = clamp01f(ctx->current.color[k]);
+    rp.secondaryColor[k] = clamp01f(ctx->current.secondaryColor[k]);
+  }
+  for (int unit = 0; unit < kMaxTextureUnits; ++unit) rp.unitTexCoord[unit] = ctx->current.texCoord[unit];
+  rp.texCoord = rp.unitTexCoord[0];
+  rp.valid = true;
+  if (ctx->renderMode.mode == GL_SELECT) ctx->renderMode.select.updateHitFlag(rp.position.z);
+}
+
+}  // namespace
+
+extern "C" {
+
+GLAPI void APIENTRY glWindowPos2s(GLshort x, GLshort y) { windowPos(float(x), float(y), 0.0f); }
+GLAPI void APIENTRY glWindowPos2i(GLint x, GLint y) { windowPos(float(x), float(y), 0.0f); }
+GLAPI void APIENTRY glWindowPos2f(GLfloat x, GLfloat y) { windowPos(x, y, 0.0f); }
+GLAPI void APIENTRY glWindowPos2d(GLdouble x, GLdouble y) { windowPos(float(x), float(y), 0.0f); }
+GLAPI void APIENTRY glWindowPos3s(GLshort x, GLshort y, GLshort z) { windowPos(float(x), float(y), float(z)); }
+GLAPI void APIENTRY glWindowPos3i(GLint x, GLint y, GLint z) { windowPos(float(x), float(y), float(z)); }
+GLAPI void APIENTRY glWindowPos3f(GLfloat x, GLfloat y, GLfloat z) { windowPos(x, y, z); }
+GLAPI void APIENTRY glWindowPos3d(GLdouble x, GLdouble y, GLdouble z) {
+  windowPos(float(x), float(y), float(z));
+}
+GLAPI void APIENTRY glWindowPos2sv(const GLshort* v) {
+  if (v) windowPos(float(v[0]), float(v[1]), 0.0f);
+}
+GLAPI void APIENTRY glWindowPos2iv(const GLint* v) {
+  if (v) windowPos(float(v[0]), float(v[1]), 0.0f);
+}
+GLAPI void APIENTRY glWindowPos2fv(const GLfloat* v) {
+  if (v) windowPos(v[0], v[1], 0.0f);
+}
+GLAPI void APIENTRY glWindowPos2dv(const GLdouble* v) {
+  if (v) windowPos(float(v[0]), float(v[1]), 0.0f);
+}
+GLAPI void APIENTRY glWindowPos3sv(const GLshort* v) {
+  if (v) windowPos(float(v[0]), float(v[1]), float(v[2]));
+}
+GLAPI void APIENTRY glWindowPos3iv(const GLint* v) {
+  if (v) windowPos(float(v[0]), float(v[1]), float(v[2]));
+}
+GLAPI void APIENTRY glWindowPos3fv(const GLfloat* v) {
+  if (v) windowPos(v[0], v[1], v[2]);
+}
+GLAPI void APIENTRY glWindowPos3dv(const GLdouble* v) {
+  if (v) windowPos(float(v[0]), float(v[1]), float(v[2]));
+}
+
+}  // extern "C"

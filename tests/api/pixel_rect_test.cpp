@@ -236,3 +236,56 @@ TEST_F(PixelRectTest, BitmapBadInputNeverCrashes) {
 
 }  // namespace
 }  // namespace glfx_test
+
+namespace glfx_test {
+namespace {
+
+TEST_F(PixelRectTest, WindowPosSetsAValidPositionInWindowCoordinates) {
+  glMatrixMode(GL_PROJECTION);
+  glLoadIdentity();
+  glOrtho(0, 1, 0, 1, -1, 1);  // glWindowPos ignores every matrix
+  glRasterPos2f(-5, -5);
+  GLint valid = 1;
+  glGetIntegerv(GL_CURRENT_RASTER_POSITION_VALID, &valid);
+  EXPECT_EQ(valid, 0);
+  glDepthRange(0.25, 0.75);
+  glColor4f(2, 0.5f, -1, 1);
+  glWindowPos3f(10.5f, -3.25f, 0.5f);
+  GLfloat pos[4], color[4];
+  glGetFloatv(GL_CURRENT_RASTER_POSITION, pos);
+  glGetFloatv(GL_CURRENT_RASTER_COLOR, color);
+  glGetIntegerv(GL_CURRENT_RASTER_POSITION_VALID, &valid);
+  EXPECT_EQ(valid, 1);
+  EXPECT_FLOAT_EQ(pos[0], 10.5f);
+  EXPECT_FLOAT_EQ(pos[1], -3.25f);
+  EXPECT_FLOAT_EQ(pos[2], 0.5f);
+  EXPECT_FLOAT_EQ(pos[3], 1.0f);
+  EXPECT_FLOAT_EQ(color[0], 1.0f);
+  EXPECT_FLOAT_EQ(color[1], 0.5f);
+  EXPECT_FLOAT_EQ(color[2], 0.0f);
+  glWindowPos2i(3, 4);
+  glGetFloatv(GL_CURRENT_RASTER_POSITION, pos);
+  EXPECT_FLOAT_EQ(pos[2], 0.25f);  // z 0 through the depth range
+  const GLdouble d[3] = {7, 8, 2};
+  glWindowPos3dv(d);
+  glGetFloatv(GL_CURRENT_RASTER_POSITION, pos);
+  EXPECT_FLOAT_EQ(pos[0], 7.0f);
+  EXPECT_FLOAT_EQ(pos[2], 0.75f);  // z clamped to 1 first
+  glDepthRange(0, 1);
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+}
+
+TEST_F(PixelRectTest, WindowPosPlacesABitmap) {
+  glClearColor(0, 0, 0, 0);
+  glClear(GL_COLOR_BUFFER_BIT);
+  const GLubyte bits[1] = {0x80};
+  glColor3f(0, 1, 0);
+  glWindowPos2i(30, 31);
+  glBitmap(1, 1, 0, 0, 0, 0, bits);
+  const std::vector<unsigned char> p = ReadAll();
+  EXPECT_EQ(At(p, 30, 31), (std::array<int, 4>{0, 255, 0, 255}));
+  EXPECT_EQ(CountColored(p, {0, 255, 0, 255}), 1);
+}
+
+}  // namespace
+}  // namespace glfx_test

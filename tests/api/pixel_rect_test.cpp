@@ -289,3 +289,35 @@ TEST_F(PixelRectTest, WindowPosPlacesABitmap) {
 
 }  // namespace
 }  // namespace glfx_test
+
+namespace glfx_test {
+namespace {
+
+TEST_F(PixelRectTest, PixelZoomIsStoredPushedAndListed) {
+  glPixelZoom(-2.5f, 0.0f);
+  GLfloat z[2];
+  glGetFloatv(GL_ZOOM_X, &z[0]);
+  glGetFloatv(GL_ZOOM_Y, &z[1]);
+  EXPECT_FLOAT_EQ(z[0], -2.5f);
+  EXPECT_FLOAT_EQ(z[1], 0.0f);
+  glPushAttrib(GL_PIXEL_MODE_BIT);
+  glPixelZoom(3, 4);
+  glPopAttrib();
+  glGetFloatv(GL_ZOOM_X, &z[0]);
+  EXPECT_FLOAT_EQ(z[0], -2.5f);
+  const GLuint list = glGenLists(1);
+  glNewList(list, GL_COMPILE);
+  glPixelZoom(5, 6);
+  glEndList();
+  glGetFloatv(GL_ZOOM_X, &z[0]);
+  EXPECT_FLOAT_EQ(z[0], -2.5f);
+  glCallList(list);
+  glGetFloatv(GL_ZOOM_Y, &z[1]);
+  EXPECT_FLOAT_EQ(z[1], 6.0f);
+  glDeleteLists(list, 1);
+  glPixelZoom(1, 1);
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+}
+
+}  // namespace
+}  // namespace glfx_test

@@ -6,6 +6,7 @@
 #include <cstring>
 
 #include "api/api.h"
+#include "pipeline/pixel_rect.h"
 #include "api/list_record.h"
 #include "framebuffer/read_pixels.h"
 #include "raster/depth.h"
@@ -50,6 +51,7 @@ GLAPI void APIENTRY glClear(GLbitfield mask) {
   if (api::compiled(&glClear, mask)) return;
   Context* ctx = api::contextFlushed();
   if (!ctx) return;
+  pipeline::flushBitmapCache(*ctx);  // st_Clear
   const GLbitfield known = GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT | GL_ACCUM_BUFFER_BIT;
   if (mask & ~known) {
     ctx->recordError(GL_INVALID_VALUE);
@@ -81,6 +83,7 @@ GLAPI void APIENTRY glReadPixels(GLint x, GLint y, GLsizei width, GLsizei height
                                  GLvoid* pixels) {
   Context* ctx = api::contextFlushed();
   if (!ctx) return;
+  pipeline::flushBitmapCache(*ctx);  // st_ReadPixels
   if (width < 0 || height < 0) {
     ctx->recordError(GL_INVALID_VALUE);
     return;
@@ -167,6 +170,7 @@ GLAPI void APIENTRY glDrawBuffer(GLenum buf) {
   if (api::compiled(&glDrawBuffer, buf)) return;
   Context* ctx = api::contextForSetter();
   if (!ctx || colorBufferNameError(*ctx, buf, false)) return;
+  if (ctx->colorBuffer.drawBuffer != buf) pipeline::flushBitmapCache(*ctx);  // into the old buffer
   if (api::setState(*ctx, ctx->colorBuffer.drawBuffer, buf, GL_COLOR_BUFFER_BIT))
     ctx->framebuffer.selectBuffers(ctx->colorBuffer.drawBuffer, ctx->pixelMode.readBuffer);
 }

@@ -38,6 +38,19 @@ GLAPI void APIENTRY glPixelTransferf(GLenum pname, GLfloat param) {
   }
 }
 
+// glPixelZoom (§3.6.4): stored as given, any value (0, negative, NaN);
+// glDrawPixels and glCopyPixels read it.
+GLAPI void APIENTRY glPixelZoom(GLfloat xfactor, GLfloat yfactor) {
+  if (api::compiled(&glPixelZoom, xfactor, yfactor)) return;
+  Context* ctx = api::contextForSetter();
+  if (!ctx) return;
+  PixelModeAttrib& p = ctx->pixelMode;
+  if (p.zoomX == xfactor && p.zoomY == yfactor) return;
+  api::beginStateChange(*ctx, GL_PIXEL_MODE_BIT);
+  p.zoomX = xfactor;
+  p.zoomY = yfactor;
+}
+
 GLAPI void APIENTRY glPixelTransferi(GLenum pname, GLint param) {
   glPixelTransferf(pname, static_cast<GLfloat>(param));
 }

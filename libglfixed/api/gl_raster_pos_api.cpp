@@ -1,18 +1,20 @@
-// The current raster position (GL 2.1 §2.13), and what glBitmap,
-// glDrawPixels and glCopyPixels do with it in GL_FEEDBACK and GL_SELECT
-// (§5.2, §5.3). Rasterizing bitmaps and pixel rectangles in GL_RENDER is not
-// implemented yet: those calls record GL_INVALID_OPERATION, as every
-// unimplemented command does.
+// The current raster position (GL 2.1 §2.13), glWindowPos (GL 1.4 §2.13),
+// and the pixel rectangle commands that draw at it: glBitmap (§3.7),
+// glDrawPixels (§3.6.4) and glCopyPixels (§4.3.3); in GL_FEEDBACK and
+// GL_SELECT what §5.2, §5.3 say. The drawing itself is pipeline/pixel_rect.
 //
 // For fixed-function vertex processing Mesa computes the raster position in
 // plain C (main/rastpos.c, reached from st_RasterPos): float matrix products
 // summed left to right, a clip test against the six planes, ndc * scale +
 // translate unfused, w the clip w; an invalid position leaves the old values.
 #include <cmath>
+#include <vector>
 
 #include "api/api.h"
 #include "api/list_record.h"
+#include "pipeline/pixel_rect.h"
 #include "state/lighting_attrib.h"
+#include "texture/unpack.h"
 #include "vertex/lighting_matrix.h"
 #include "vertex/vertex_stage.h"
 
@@ -50,8 +52,8 @@ void rasterTexCoords(const Context& ctx, const vertex::VertexState& vs, const gl
   const bool eyeCoords = vs.texCoord.needEyeCoords || vs.pointAttenuated ||
                          (lit && vs.lightingConstants && !vs.lightingConstants->lightsAllowObjectSpace) ||
                          (lit && !mv.lengthPreserving);
-  const glm::vec3 n = eyeCoords ? vertex::transformNormalLikeMesa(mv.inverse, ctx.current.normal)
-                                : ctx.current.normal;
+  const glm::vec3 n =
+      eyeCoords ? vertex::transformNormalLikeMesa(mv.inverse, ctx.current.normal) : ctx.current.normal;
   // The sphere-map terms (NORMALIZE_3FV of the eye position).
   glm::vec3 u(eye);
   {
@@ -65,7 +67,9 @@ void rasterTexCoords(const Context& ctx, const vertex::VertexState& vs, const gl
   const glm::vec3 r(u.x - n.x * twoNu, u.y - n.y * twoNu, u.z - n.z * twoNu);
   const float m = r.x * r.x + r.y * r.y + (r.z + 1.0f) * (r.z + 1.0f);
   const float mInv = m > 0.0f ? 0.5f * (1.0f / std::sqrt(m)) : 0.0f;
-  auto dot4 = [](const glm::vec4& a, const glm::vec4& b) { return a.x * b.x + a.y * b.y + a.z * b.z + a.w * b.w; };
+  auto dot4 = [](const glm::vec4& a, const glm::vec4& b) {
+    return a.x * b.x + a.y * b.y + a.z * b.z + a.w * b.w;
+  };
   for (int unit = 0; unit < kMaxTextureUnits; ++unit) {
     glm::vec4 tc = ctx.current.texCoord[unit];
     const TextureUnitEnables& e = ctx.texture.enables[unit];
@@ -212,19 +216,69 @@ GLenum drawPixelsTypeError(const Context& ctx, GLenum format, GLenum type) {
   return GL_NO_ERROR;
 }
 
-// After validation: GL_FEEDBACK writes the token, GL_SELECT does nothing
-// (GL 2.1 appendix B, corollary 6; Mesa alike), GL_RENDER is not implemented.
-// Returns false in GL_RENDER (after recording the error).
-bool pixelsInRenderMode(Context& ctx, GLenum token, bool drawsSomething) {
-  if (ctx.renderMode.mode == GL_RENDER) {
-    if (drawsSomething) {
-      ctx.recordError(GL_INVALID_OPERATION);  // rasterization not implemented yet
-      return false;
-    }
-    return true;
-  }
+// After validation, outside GL_RENDER: GL_FEEDBACK writes the token,
+// GL_SELECT does nothing (GL 2.1 appendix B, corollary 6; Mesa alike).
+void pixelsInFeedbackOrSelect(Context& ctx, GLenum token) {
   if (ctx.renderMode.mode == GL_FEEDBACK) feedbackRasterPos(ctx, token);
+}
+
+// The client memory of an unpack: `pixels`, or an offset into the bound
+// pixel unpack buffer (§4.3.5): null with `error` set when the buffer is
+// mapped or too small, null without error for no data.
+const uint8_t* unpackSource(Context& ctx, const void* pixels, size_t extent, GLenum& error) {
+  error = GL_NO_ERROR;
+  const GLuint name = ctx.pixelStore.pixelUnpackBufferBinding;
+  if (!name) return static_cast<const uint8_t*>(pixels);
+  BufferObject* b = ctx.buffers.find(name);
+  const size_t offset = reinterpret_cast<uintptr_t>(pixels);
+  if (!b || b->mapped || offset > b->data.size() || extent > b->data.size() - offset) {
+    error = GL_INVALID_OPERATION;
+    return nullptr;
+  }
+  return b->data.data() + offset;
+}
+
+// glBitmap's bits through the unpack state (§3.6.4 with GL_COLOR_INDEX,
+// GL_BITMAP; most significant bit first) into Mesa's tight rows
+// (pipeline::bitmapRowBytes). False (error recorded if any) when nothing
+// can be read.
+bool unpackBitmap(Context& ctx, int width, int height, const GLubyte* bitmap, std::vector<GLubyte>& bits) {
+  PixelStoreAttrib store = ctx.pixelStore;
+  store.unpackSkipImages = 0;  // a 2D image
+  const texture::ClientLayout layout = texture::unpackLayout(store, width, height, GL_COLOR_INDEX, GL_BITMAP);
+  GLenum error;
+  const uint8_t* src = unpackSource(ctx, bitmap, layout.extent(width, height, 1), error);
+  if (error) ctx.recordError(error);
+  if (!src) return false;
+  const int rowBytes = pipeline::bitmapRowBytes(width);
+  bits.assign(static_cast<size_t>(rowBytes) * height, 0);
+  for (int j = 0; j < height; ++j) {
+    const uint8_t* row = src + layout.start + static_cast<size_t>(j) * layout.rowStride;
+    for (int i = 0; i < width; ++i) {
+      const int bit = layout.skipBits + i;
+      if (row[bit >> 3] & (0x80u >> (bit & 7))) bits[size_t(j) * rowBytes + (i >> 3)] |= 0x80u >> (i & 7);
+    }
+  }
   return true;
+}
+
+// glBitmap with its bits unpacked: what a display list stores and replays
+// (Mesa's save_Bitmap unpacks at compile time, §5.4).
+void bitmapUnpacked(GLsizei width, GLsizei height, GLfloat xorig, GLfloat yorig, GLfloat xmove, GLfloat ymove,
+                    const GLubyte* bits) {
+  if (api::compiled(&bitmapUnpacked, width, height, xorig, yorig, xmove, ymove,
+                    api::copied(bits, bits ? size_t(pipeline::bitmapRowBytes(width)) * size_t(height) : 0)))
+    return;
+  Context* ctx = api::contextFlushed();
+  if (!ctx) return;
+  if (width < 0 || height < 0) return ctx->recordError(GL_INVALID_VALUE);
+  if (!ctx->rasterPos.valid) return;
+  if (ctx->renderMode.mode == GL_RENDER)
+    pipeline::drawBitmap(*ctx, width, height, xorig, yorig, bits, ctx->displayLists.executing);
+  else
+    pixelsInFeedbackOrSelect(*ctx, GL_BITMAP_TOKEN);
+  ctx->rasterPos.position.x += xmove;
+  ctx->rasterPos.position.y += ymove;
 }
 
 }  // namespace
@@ -233,20 +287,17 @@ extern "C" {
 
 GLAPI void APIENTRY glBitmap(GLsizei width, GLsizei height, GLfloat xorig, GLfloat yorig, GLfloat xmove,
                              GLfloat ymove, const GLubyte* bitmap) {
-  // Compiled without the bitmap: no stage reads its bits yet (rendering
-  // bitmaps is not implemented). When it is, they must be unpacked here, at
-  // compile time (§5.4), as Mesa's save_Bitmap does.
-  if (api::compiled(&glBitmap, width, height, xorig, yorig, xmove, ymove,
-                    static_cast<const GLubyte*>(nullptr)))
-    return;
-  Context* ctx = api::contextFlushed();
+  Context* ctx = api::context();
   if (!ctx) return;
-  if (width < 0 || height < 0) return ctx->recordError(GL_INVALID_VALUE);
-  if (!ctx->rasterPos.valid) return;
-  // An empty bitmap only moves the raster position, in every mode.
-  if (!pixelsInRenderMode(*ctx, GL_BITMAP_TOKEN, width > 0 && height > 0)) return;
-  ctx->rasterPos.position.x += xmove;
-  ctx->rasterPos.position.y += ymove;
+  std::vector<GLubyte> bits;
+  const bool compiling = api::listCompiler(ctx) && !api::listCompiler(ctx)->insideBeginEnd();
+  // The bits are read while compiling (§5.4), or when something is drawn.
+  const bool read = width > 0 && height > 0 && !ctx->insideBeginEnd &&
+                    (compiling || (ctx->rasterPos.valid && ctx->renderMode.mode == GL_RENDER));
+  if (read && !unpackBitmap(*ctx, width, height, bitmap, bits) && ctx->pixelStore.pixelUnpackBufferBinding &&
+      !compiling)
+    return;  // a bad pixel unpack buffer: the error, and no draw, no move
+  bitmapUnpacked(width, height, xorig, yorig, xmove, ymove, bits.empty() ? nullptr : bits.data());
 }
 
 GLAPI void APIENTRY glDrawPixels(GLsizei width, GLsizei height, GLenum format, GLenum type,
@@ -258,7 +309,11 @@ GLAPI void APIENTRY glDrawPixels(GLsizei width, GLsizei height, GLenum format, G
   if (width < 0 || height < 0) return ctx->recordError(GL_INVALID_VALUE);
   if (GLenum e = drawPixelsTypeError(*ctx, format, type)) return ctx->recordError(e);
   if (!ctx->rasterPos.valid) return;
-  pixelsInRenderMode(*ctx, GL_DRAW_PIXEL_TOKEN, width > 0 && height > 0);
+  if (ctx->renderMode.mode == GL_RENDER) {
+    if (width > 0 && height > 0) ctx->recordError(GL_INVALID_OPERATION);  // not implemented yet
+    return;
+  }
+  pixelsInFeedbackOrSelect(*ctx, GL_DRAW_PIXEL_TOKEN);
 }
 
 GLAPI void APIENTRY glCopyPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum type) {
@@ -270,7 +325,11 @@ GLAPI void APIENTRY glCopyPixels(GLint x, GLint y, GLsizei width, GLsizei height
   if (type == GL_STENCIL || (type == GL_DEPTH && ctx->framebuffer.depth.bits() == 0))
     return ctx->recordError(GL_INVALID_OPERATION);
   if (!ctx->rasterPos.valid) return;
-  pixelsInRenderMode(*ctx, GL_COPY_PIXEL_TOKEN, width > 0 && height > 0);
+  if (ctx->renderMode.mode == GL_RENDER) {
+    if (width > 0 && height > 0) ctx->recordError(GL_INVALID_OPERATION);  // not implemented yet
+    return;
+  }
+  pixelsInFeedbackOrSelect(*ctx, GL_COPY_PIXEL_TOKEN);
 }
 
 }  // extern "C"
@@ -341,6 +400,74 @@ GLAPI void APIENTRY glRasterPos3dv(const GLdouble* v) {
 }
 GLAPI void APIENTRY glRasterPos4dv(const GLdouble* v) {
   if (v) rasterPos(float(v[0]), float(v[1]), float(v[2]), float(v[3]));
+}
+
+}  // extern "C"
+
+// glWindowPos (GL 1.4 §2.13): the raster position set in window coordinates,
+// without transformation or clipping, always valid; z mapped through
+// glDepthRange; the colour, secondary colour and texture coordinates the
+// current ones (Mesa's window_pos3f clamps the colours to [0, 1]).
+namespace {
+
+float clamp01f(float v) { return v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f; }  // NaN -> 0
+
+void windowPos(float x, float y, float z) {
+  if (api::compiled(&windowPos, x, y, z)) return;
+  Context* ctx = api::contextFlushed();
+  if (!ctx) return;
+  RasterPosState& rp = ctx->rasterPos;
+  const float n = static_cast<float>(api::clamp01(ctx->viewport.depthNear)),
+              f = static_cast<float>(api::clamp01(ctx->viewport.depthFar));
+  rp.position = glm::vec4(x, y, clamp01f(z) * (f - n) + n, 1.0f);
+  rp.distance = 0.0f;
+  for (int k = 0; k < 4; ++k) {
+    rp.color[k] = clamp01f(ctx->current.color[k]);
+    rp.secondaryColor[k] = clamp01f(ctx->current.secondaryColor[k]);
+  }
+  for (int unit = 0; unit < kMaxTextureUnits; ++unit) rp.unitTexCoord[unit] = ctx->current.texCoord[unit];
+  rp.texCoord = rp.unitTexCoord[0];
+  rp.valid = true;
+  if (ctx->renderMode.mode == GL_SELECT) ctx->renderMode.select.updateHitFlag(rp.position.z);
+}
+
+}  // namespace
+
+extern "C" {
+
+GLAPI void APIENTRY glWindowPos2s(GLshort x, GLshort y) { windowPos(float(x), float(y), 0.0f); }
+GLAPI void APIENTRY glWindowPos2i(GLint x, GLint y) { windowPos(float(x), float(y), 0.0f); }
+GLAPI void APIENTRY glWindowPos2f(GLfloat x, GLfloat y) { windowPos(x, y, 0.0f); }
+GLAPI void APIENTRY glWindowPos2d(GLdouble x, GLdouble y) { windowPos(float(x), float(y), 0.0f); }
+GLAPI void APIENTRY glWindowPos3s(GLshort x, GLshort y, GLshort z) { windowPos(float(x), float(y), float(z)); }
+GLAPI void APIENTRY glWindowPos3i(GLint x, GLint y, GLint z) { windowPos(float(x), float(y), float(z)); }
+GLAPI void APIENTRY glWindowPos3f(GLfloat x, GLfloat y, GLfloat z) { windowPos(x, y, z); }
+GLAPI void APIENTRY glWindowPos3d(GLdouble x, GLdouble y, GLdouble z) {
+  windowPos(float(x), float(y), float(z));
+}
+GLAPI void APIENTRY glWindowPos2sv(const GLshort* v) {
+  if (v) windowPos(float(v[0]), float(v[1]), 0.0f);
+}
+GLAPI void APIENTRY glWindowPos2iv(const GLint* v) {
+  if (v) windowPos(float(v[0]), float(v[1]), 0.0f);
+}
+GLAPI void APIENTRY glWindowPos2fv(const GLfloat* v) {
+  if (v) windowPos(v[0], v[1], 0.0f);
+}
+GLAPI void APIENTRY glWindowPos2dv(const GLdouble* v) {
+  if (v) windowPos(float(v[0]), float(v[1]), 0.0f);
+}
+GLAPI void APIENTRY glWindowPos3sv(const GLshort* v) {
+  if (v) windowPos(float(v[0]), float(v[1]), float(v[2]));
+}
+GLAPI void APIENTRY glWindowPos3iv(const GLint* v) {
+  if (v) windowPos(float(v[0]), float(v[1]), float(v[2]));
+}
+GLAPI void APIENTRY glWindowPos3fv(const GLfloat* v) {
+  if (v) windowPos(v[0], v[1], v[2]);
+}
+GLAPI void APIENTRY glWindowPos3dv(const GLdouble* v) {
+  if (v) windowPos(float(v[0]), float(v[1]), float(v[2]));
 }
 
 }  // extern "C"

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "api/api.h"
+#include "pipeline/pixel_rect.h"
 #include "state/vertex_array_queries.h"
 #include "api/list_record.h"
 #include "vertex/color_material.h"
@@ -233,6 +234,7 @@ GLAPI void APIENTRY glHint(GLenum target, GLenum mode) {
 namespace {
 void flushToSurface() {
   Context* ctx = api::contextFlushed();
+  if (ctx) pipeline::flushBitmapCache(*ctx);  // st_flush
   if (!ctx || !ctx->framebuffer.surface) return;
   const Framebuffer& fb = ctx->framebuffer;
   const bool frontDrawn = fb.color.pixels == fb.front.pixels ||

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "api/api.h"
+#include "pipeline/pixel_rect.h"
 #include "api/list_record.h"
 #include "api/tex_image_common.h"
 #include "texture/internal_format.h"
@@ -74,6 +75,7 @@ bool hasSourceBuffer(const Framebuffer& fb, bool depth) {
 void copyTexImage(int dims, GLenum target, GLint level, GLenum internalFormat, GLint x, GLint y,
                   GLsizei width, GLsizei height, GLint border) {
   Context* ctx = api::contextForSetter();
+  if (ctx) pipeline::flushBitmapCache(*ctx);  // st_CopyTexImage reads what the cache holds
   if (!ctx) return;
   ImageTarget t;
   if (!imageTarget(target, dims, false, t)) return ctx->recordError(GL_INVALID_ENUM);
@@ -106,6 +108,7 @@ void copyTexImage(int dims, GLenum target, GLint level, GLenum internalFormat, G
 void copyTexSubImage(int dims, GLenum target, GLint level, GLint xo, GLint yo, GLint zo, GLint x, GLint y,
                      GLsizei width, GLsizei height) {
   Context* ctx = api::contextForSetter();
+  if (ctx) pipeline::flushBitmapCache(*ctx);
   if (!ctx) return;
   ImageTarget t;
   if (!imageTarget(target, dims, false, t)) return ctx->recordError(GL_INVALID_ENUM);

@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "fragment/texture_stage.h"
+#include "pipeline/pixel_rect.h"
 #include "primitive/clip.h"
 #include "primitive/primitive.h"
 #include "primitive/select_feedback.h"
@@ -167,12 +168,39 @@ primitive::PrimitiveState primitiveState(const Context& ctx, GLenum mode, bool s
 
 }  // namespace
 
+raster::RasterState pixelRectRasterState(const Context& ctx) {
+  raster::RasterState r = primitiveState(ctx, GL_TRIANGLES, false).raster;
+  // The state tracker's bitmap and drawpixels rasterizer state: the whole
+  // buffer as the viewport, the scissor only if enabled; no stipple, no
+  // offset (st_cb_bitmap.c, st_cb_drawpixels.c).
+  r.scissorX0 = 0;
+  r.scissorY0 = 0;
+  r.scissorX1 = ctx.framebuffer.width();
+  r.scissorY1 = ctx.framebuffer.height();
+  if (ctx.scissor.test) {
+    const ScissorAttrib& sc = ctx.scissor;
+    r.scissorX0 = std::max(r.scissorX0, sc.x);
+    r.scissorY0 = std::max(r.scissorY0, sc.y);
+    r.scissorX1 = static_cast<int>(std::min<long long>(r.scissorX1, static_cast<long long>(sc.x) + sc.width));
+    r.scissorY1 = static_cast<int>(std::min<long long>(r.scissorY1, static_cast<long long>(sc.y) + sc.height));
+  }
+  r.polygonStipple = nullptr;
+  r.stippleEveryPrimitive = false;
+  r.polygonOffset = false;
+  r.textures = nullptr;
+  r.texCoordUnits = 0;
+  r.varyingCount = 4;
+  r.pointSprite = false;
+  return r;
+}
+
 void drawBatch(Context& ctx, const VertexBatch& batch) {
   drawBatch(ctx, batch, primitive::PrimitiveState::Submission::kBeginEnd, ctx.vbo.colorIsVertexData());
 }
 
 void drawBatch(Context& ctx, const VertexBatch& batch, primitive::PrimitiveState::Submission submission,
                bool colorIsVertexData, bool fetchedVertexOutside) {
+  flushBitmapCache(ctx);  // Mesa's st_prepare_draw
   if (!ctx.framebuffer.bound() || batch.size() == 0) return;
   const vertex::VertexState& vs = ctx.validate();
   static thread_local ShadedVertices shaded;  // reused: no allocation per batch

@@ -19,6 +19,11 @@ void drawBatch(Context& ctx, const VertexBatch& batch);
 void drawBatch(Context& ctx, const VertexBatch& batch, primitive::PrimitiveState::Submission submission,
                bool colorIsVertexData, bool fetchedVertexOutside = false);
 
+// The rasterizer state glBitmap and glDrawPixels draw their quads with
+// (pipeline/pixel_rect.cpp): the fragment operations of the context, the
+// whole buffer (cut by an enabled scissor box) as the region.
+raster::RasterState pixelRectRasterState(const Context& ctx);
+
 // Whether some vertex of `batch` is outside the view volume once
 // transformed (Mesa's clip test of the vertices it fetched).
 bool anyVertexOutside(Context& ctx, const VertexBatch& batch);

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "pipeline/immediate_mode.h"
+#include "pipeline/pixel_rect.h"
 #include "platform/egl_objects.h"
 #include "platform/x11_present.h"
 
@@ -341,6 +342,7 @@ EGLAPI EGLBoolean EGLAPIENTRY eglSwapBuffers(EGLDisplay dpy, EGLSurface surface)
   EglContext* c = contextDrawingTo(s);
   if (!c) return fail(EGL_BAD_SURFACE, EGL_FALSE);
   glfixed::pipeline::flushVertices(*c->context);
+  glfixed::pipeline::flushBitmapCache(*c->context);
   if (s->type != EGL_WINDOW_BIT) return succeed(EGL_TRUE);  // pbuffers and pixmaps: no effect
   // The swap reallocates the buffers of a window whose size changed.
   return guarded(EGL_FALSE, [s] {

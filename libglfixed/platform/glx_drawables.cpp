@@ -6,6 +6,7 @@
 #include <thread>
 
 #include "pipeline/immediate_mode.h"
+#include "pipeline/pixel_rect.h"
 #include "platform/glx_internal.h"
 #include "platform/x11_error_trap.h"
 #include "platform/x11_present.h"
@@ -160,7 +161,10 @@ GLAPI void APIENTRY glXSwapBuffers(Display* dpy, GLXDrawable drawable) {
   if (!d || !d->surface) return;  // GLXBadDrawable; a window never made current has nothing to show
   // The current context's buffered vertices belong in the back buffer first
   // (GLX 1.4 §3.3.11: an implicit glFlush).
-  if (current && current->draw == d) glfixed::pipeline::flushVertices(current->context);
+  if (current && current->draw == d) {
+    glfixed::pipeline::flushVertices(current->context);
+    glfixed::pipeline::flushBitmapCache(current->context);
+  }
   paceSwap(*d);
   d->surface->swapBuffers();
 }

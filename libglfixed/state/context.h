@@ -15,6 +15,7 @@
 #include "state/attrib_groups.h"
 #include "state/attrib_stack.h"
 #include "state/attribs.h"
+#include "state/bitmap_cache.h"
 #include "state/buffer_objects.h"
 #include "state/diagnostics.h"
 #include "state/dirty.h"
@@ -133,6 +134,8 @@ class Context {
   } vbo;
   // Where Mesa's vertex buffer stands (pipeline/vbo_store.h); kept across flushes.
   pipeline::VboStore vboStore;
+  // glBitmap calls not drawn yet (state/bitmap_cache.h, pipeline/pixel_rect.cpp).
+  BitmapCache bitmapCache;
   // Lines (primitive/lines.cpp): the draw module's stipple counter, which Mesa
   // keeps from draw to draw (draw_pipe_stipple.c), and whether the next batch
   // continues the previous one's strip (a long array draw drawn in chunks,

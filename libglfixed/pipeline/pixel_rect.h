@@ -1,0 +1,33 @@
+// Pixel rectangles in GL_RENDER (GL 2.1 §3.6.4 glDrawPixels, §3.7 glBitmap,
+// §4.3.3 glCopyPixels): what each draws at the raster position, drawn as
+// Mesa's state tracker draws them on llvmpipe (raster/pixel_rect.h).
+#pragma once
+
+#include <cstdint>
+
+namespace glfixed {
+class Context;
+}
+
+namespace glfixed::pipeline {
+
+// A bitmap as Mesa keeps one after unpacking (and a display list stores
+// it): rows of (width + 7) / 8 bytes, the most significant bit the leftmost
+// pixel, row 0 the bottom row.
+inline int bitmapRowBytes(int width) { return (width + 7) / 8; }
+
+// glBitmap's fragments (§3.7): one for each set bit, at window (x + i, y + j)
+// where x, y are the raster position minus the origin, floored as Mesa does
+// (main/drawpix.c: floor(position + 0.0001 - origin)); the raster colour and
+// depth, through the fragment operations. As Mesa does, a bitmap of at most
+// 512 x 32 goes into the bitmap cache (state/bitmap_cache.h) and is drawn
+// when the cache is flushed; `fromList` (a display list's bitmap, which Mesa
+// keeps as a texture) flushes the cache and draws at once.
+void drawBitmap(Context& ctx, int width, int height, float xorig, float yorig, const uint8_t* bits,
+                bool fromList);
+
+// Draws what the bitmap cache holds, with the state of now (Mesa's
+// st_flush_bitmap_cache): before every draw, clear, read, copy and flush.
+void flushBitmapCache(Context& ctx);
+
+}  // namespace glfixed::pipeline

@@ -95,9 +95,10 @@ constexpr Capability kTable[] = {
     entry(GL_CLIP_PLANE0 + 6, clipPlane<6>, GL_TRANSFORM_BIT, 0, kSettable),
     entry(GL_CLIP_PLANE0 + 7, clipPlane<7>, GL_TRANSFORM_BIT, 0, kSettable),
     entry(GL_SCISSOR_TEST, field<&Context::scissor, &ScissorAttrib::test>, GL_SCISSOR_BIT, 0, kSettable),
-    // State without its stage yet.
+    // The alpha test (fragment/alpha_test.inc).
     entry(GL_ALPHA_TEST, field<&Context::colorBuffer, &ColorBufferAttrib::alphaTest>, GL_COLOR_BUFFER_BIT, 0,
-          kHeld),
+          kSettable),
+    // State without its stage yet.
     entry(GL_BLEND, field<&Context::colorBuffer, &ColorBufferAttrib::blend>, GL_COLOR_BUFFER_BIT, 0, kHeld),
     entry(GL_COLOR_LOGIC_OP, field<&Context::colorBuffer, &ColorBufferAttrib::colorLogicOp>,
           GL_COLOR_BUFFER_BIT, 0, kHeld),

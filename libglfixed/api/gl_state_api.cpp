@@ -4,10 +4,10 @@
 
 #include "api/api.h"
 #include "pipeline/pixel_rect.h"
-#include "state/vertex_array_queries.h"
 #include "api/list_record.h"
-#include "vertex/color_material.h"
 #include "state/capabilities.h"
+#include "state/vertex_array_queries.h"
+#include "vertex/color_material.h"
 
 using namespace glfixed;
 
@@ -76,7 +76,8 @@ GLAPI GLboolean APIENTRY glIsEnabled(GLenum cap) {
   const Capability* c = findCapability(cap);
   if (c) return c->flag(*ctx) ? GL_TRUE : GL_FALSE;
   // The client-state arrays (glEnableClientState) answer glIsEnabled too (§6.1.1).
-  if (const ClientArray* a = clientArrayOfCapability(ctx->vertexArray, cap)) return a->enabled ? GL_TRUE : GL_FALSE;
+  if (const ClientArray* a = clientArrayOfCapability(ctx->vertexArray, cap))
+    return a->enabled ? GL_TRUE : GL_FALSE;
   ctx->recordError(GL_INVALID_ENUM);
   return GL_FALSE;
 }
@@ -144,6 +145,24 @@ GLAPI void APIENTRY glDepthFunc(GLenum func) {
     return;
   }
   api::setState(*ctx, ctx->depth.func, func, GL_DEPTH_BUFFER_BIT);
+}
+
+// The alpha test (GL 2.1 §4.1.4): the reference is clamped to [0, 1] when
+// stored (a NaN becomes 0, as Mesa's CLAMP does).
+GLAPI void APIENTRY glAlphaFunc(GLenum func, GLclampf ref) {
+  if (api::compiled(&glAlphaFunc, func, ref)) return;
+  Context* ctx = api::contextForSetter();
+  if (!ctx) return;
+  if (!isDepthFunc(func)) {  // the same eight functions
+    ctx->recordError(GL_INVALID_ENUM);
+    return;
+  }
+  ColorBufferAttrib& c = ctx->colorBuffer;
+  const float clamped = api::clamp01(ref);
+  if (c.alphaFunc == func && c.alphaRef == clamped) return;
+  api::beginStateChange(*ctx, GL_COLOR_BUFFER_BIT);
+  c.alphaFunc = func;
+  c.alphaRef = clamped;
 }
 
 GLAPI void APIENTRY glDepthMask(GLboolean flag) {
@@ -237,8 +256,7 @@ void flushToSurface() {
   if (ctx) pipeline::flushBitmapCache(*ctx);  // st_flush
   if (!ctx || !ctx->framebuffer.surface) return;
   const Framebuffer& fb = ctx->framebuffer;
-  const bool frontDrawn = fb.color.pixels == fb.front.pixels ||
-                          fb.drawsIntoBoth(ctx->colorBuffer.drawBuffer);
+  const bool frontDrawn = fb.color.pixels == fb.front.pixels || fb.drawsIntoBoth(ctx->colorBuffer.drawBuffer);
   if (frontDrawn) fb.surface->frontBufferFlushed();
 }
 }  // namespace

@@ -23,6 +23,7 @@
 namespace glfixed::fragment {
 namespace generic {
 #define GLFIXED_BLOCK_AVX2 0
+#include "fragment/alpha_test.inc"
 #include "fragment/blend.inc"
 #include "fragment/block_shader.inc"
 #undef GLFIXED_BLOCK_AVX2
@@ -32,6 +33,7 @@ namespace generic {
 #pragma GCC target("avx2,fma")
 namespace avx2 {
 #define GLFIXED_BLOCK_AVX2 1
+#include "fragment/alpha_test.inc"
 #include "fragment/blend.inc"
 #include "fragment/block_shader.inc"
 #undef GLFIXED_BLOCK_AVX2
@@ -40,17 +42,29 @@ namespace avx2 {
 
 bool haveAvx2Fma() { return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma"); }
 
-void shadePrimitiveGeneric(const raster::PrimitiveSetup& t, const ShadeTarget& s) { generic::shadeBlocks(t, s); }
+void shadePrimitiveGeneric(const raster::PrimitiveSetup& t, const ShadeTarget& s) {
+  generic::shadeBlocks(t, s);
+}
 
-__attribute__((target("avx2,fma"))) void shadePrimitiveAvx2(const raster::PrimitiveSetup& t, const ShadeTarget& s) {
+__attribute__((target("avx2,fma"))) void shadePrimitiveAvx2(const raster::PrimitiveSetup& t,
+                                                            const ShadeTarget& s) {
   avx2::shadeBlocks(t, s);
+}
+
+AlphaTestState makeAlphaTest(bool enabled, GLenum func, float ref) {
+  AlphaTestState a;
+  if (!enabled) return a;
+  a.func = func;
+  a.ref = raster::colorToUnorm8(ref);
+  return a;
 }
 
 namespace {
 const bool kUseAvx2 = haveAvx2Fma();
 }  // namespace
 
-ShadeTarget makeShadeTarget(const raster::RasterState& state, Framebuffer& fb, const raster::PrimitiveSetup& t) {
+ShadeTarget makeShadeTarget(const raster::RasterState& state, Framebuffer& fb,
+                            const raster::PrimitiveSetup& t) {
   ShadeTarget s;
   s.width = fb.width();
   s.height = fb.height();
@@ -74,6 +88,9 @@ ShadeTarget makeShadeTarget(const raster::RasterState& state, Framebuffer& fb, c
   s.stipple = t.stipple ? t.stipple : (state.stippleEveryPrimitive ? state.polygonStipple : nullptr);
   s.textures = state.textures && state.textures->unitCount > 0 ? state.textures : nullptr;
   s.blend = state.blend;
+  s.alphaTest = state.alphaTest;
+  // The alpha test can discard after the colour: llvmpipe then tests depth late.
+  if (s.alphaTest.active()) s.lateDepth = true;
   return s;
 }
 

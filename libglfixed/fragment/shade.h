@@ -8,6 +8,7 @@
 
 #include <cstdint>
 
+#include "fragment/alpha_test_state.h"
 #include "fragment/blend_state.h"
 #include "framebuffer/framebuffer.h"
 #include "raster/primitive_setup.h"
@@ -35,7 +36,8 @@ struct ShadeTarget {
   // The depth test after the colour (llvmpipe's late depth test, when the
   // fragment's colour can discard it: the alpha test), else before it.
   bool lateDepth = false;
-  bool secondary = false;  // colour sum: add varyings 4..6 to 0..2 (GL 2.1 §3.9)
+  AlphaTestState alphaTest;  // GL 2.1 §4.1.4, on the colour's alpha byte
+  bool secondary = false;    // colour sum: add varyings 4..6 to 0..2 (GL 2.1 §3.9)
   // The polygon stipple the fragments pass (null: none): the setup's
   // (triangles), or the state's for every primitive while Mesa's stipple
   // shader stays bound (RasterState::stippleEveryPrimitive).

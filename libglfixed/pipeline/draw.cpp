@@ -94,6 +94,8 @@ primitive::PrimitiveState primitiveState(const Context& ctx, GLenum mode, bool s
                                        cb.logicOpMode);
   }
   r.varyingCount = separateSpecular ? 8 : 4;
+  r.alphaTest =
+      fragment::makeAlphaTest(ctx.colorBuffer.alphaTest, ctx.colorBuffer.alphaFunc, ctx.colorBuffer.alphaRef);
   r.scissorX0 = std::max(0, ctx.viewport.x);
   r.scissorY0 = std::max(0, ctx.viewport.y);
   r.scissorX1 = std::min(ctx.framebuffer.width(), ctx.viewport.x + ctx.viewport.width);
@@ -227,8 +229,7 @@ void drawBatch(Context& ctx, const VertexBatch& batch, primitive::PrimitiveState
       break;
     }
   Framebuffer& fb = ctx.framebuffer;
-  if (!fb.drawsIntoBoth(ctx.colorBuffer.drawBuffer))
-    return primitive::drawPrimitives(ps, shaded, fb);
+  if (!fb.drawsIntoBoth(ctx.colorBuffer.drawBuffer)) return primitive::drawPrimitives(ps, shaded, fb);
   // GL_FRONT_AND_BACK (and GL_LEFT) on a double-buffered surface: the same
   // primitives into the back buffer, then into the front one from the same
   // depth values and stipple phase, so both get the same pixels (§4.2.1).

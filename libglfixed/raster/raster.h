@@ -4,6 +4,7 @@
 
 #include <GL/gl.h>
 
+#include "fragment/alpha_test_state.h"
 #include "fragment/blend_state.h"
 #include "framebuffer/framebuffer.h"
 #include "raster/edge.h"
@@ -50,6 +51,8 @@ struct RasterState {
   // The draw's texturing (null or no unit: none), which the fragment stage
   // applies; owned by the draw.
   const fragment::TextureStage* textures = nullptr;
+  // The alpha test (GL 2.1 §4.1.4; func GL_ALWAYS when disabled).
+  fragment::AlphaTestState alphaTest;
   // Only pixels in [scissorX0, scissorX1) x [scissorY0, scissorY1) are written,
   // in GL window coordinates (y up): the viewport intersected with the buffer.
   int scissorX0 = 0, scissorY0 = 0, scissorX1 = 0, scissorY1 = 0;

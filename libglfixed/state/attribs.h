@@ -13,8 +13,9 @@ namespace glfixed {
 struct CurrentAttrib {
   glm::vec4 color{1, 1, 1, 1};
   glm::vec3 normal{0, 0, 1};
-  glm::vec4 texCoord[8] = {glm::vec4(0, 0, 0, 1), glm::vec4(0, 0, 0, 1), glm::vec4(0, 0, 0, 1), glm::vec4(0, 0, 0, 1),
-                           glm::vec4(0, 0, 0, 1), glm::vec4(0, 0, 0, 1), glm::vec4(0, 0, 0, 1), glm::vec4(0, 0, 0, 1)};
+  glm::vec4 texCoord[8] = {glm::vec4(0, 0, 0, 1), glm::vec4(0, 0, 0, 1), glm::vec4(0, 0, 0, 1),
+                           glm::vec4(0, 0, 0, 1), glm::vec4(0, 0, 0, 1), glm::vec4(0, 0, 0, 1),
+                           glm::vec4(0, 0, 0, 1), glm::vec4(0, 0, 0, 1)};
   glm::vec4 secondaryColor{0, 0, 0, 1};
   float fogCoord = 0;
   float colorIndex = 1;
@@ -59,11 +60,11 @@ struct ColorBufferAttrib {
   glm::vec4 clearColor{0, 0, 0, 0};
   bool dither = true;
   std::array<bool, 4> writeMask{true, true, true, true};
+  bool alphaTest = false;  // the alpha test (fragment/alpha_test.inc)
+  GLenum alphaFunc = GL_ALWAYS;
+  float alphaRef = 0;  // clamped to [0, 1]
   // Held, not used yet (table 6.18-6.19): the per-fragment stages that read
   // them come later.
-  bool alphaTest = false;
-  GLenum alphaFunc = GL_ALWAYS;
-  float alphaRef = 0;
   bool blend = false;
   GLenum blendSrcRGB = GL_ONE, blendSrcAlpha = GL_ONE, blendDstRGB = GL_ZERO, blendDstAlpha = GL_ZERO;
   GLenum blendEquationRGB = GL_FUNC_ADD, blendEquationAlpha = GL_FUNC_ADD;

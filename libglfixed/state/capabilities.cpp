@@ -95,6 +95,9 @@ constexpr Capability kTable[] = {
     entry(GL_CLIP_PLANE0 + 6, clipPlane<6>, GL_TRANSFORM_BIT, 0, kSettable),
     entry(GL_CLIP_PLANE0 + 7, clipPlane<7>, GL_TRANSFORM_BIT, 0, kSettable),
     entry(GL_SCISSOR_TEST, field<&Context::scissor, &ScissorAttrib::test>, GL_SCISSOR_BIT, 0, kSettable),
+    // The alpha test (fragment/alpha_test.inc).
+    entry(GL_ALPHA_TEST, field<&Context::colorBuffer, &ColorBufferAttrib::alphaTest>, GL_COLOR_BUFFER_BIT, 0,
+          kSettable),
     // Blending and the logic op (fragment/blend.inc). GL_INDEX_LOGIC_OP (GL
     // 1.0's GL_LOGIC_OP) is held and queried but, as in Mesa, changes nothing
     // in RGBA mode.
@@ -105,8 +108,6 @@ constexpr Capability kTable[] = {
     entry(GL_INDEX_LOGIC_OP, field<&Context::colorBuffer, &ColorBufferAttrib::indexLogicOp>,
           GL_COLOR_BUFFER_BIT, 0, kSettable),
     // State without its stage yet.
-    entry(GL_ALPHA_TEST, field<&Context::colorBuffer, &ColorBufferAttrib::alphaTest>, GL_COLOR_BUFFER_BIT, 0,
-          kHeld),
     entry(GL_FOG, field<&Context::fog, &FogAttrib::enabled>, GL_FOG_BIT, 0, kHeld),
     entry(GL_COLOR_SUM, field<&Context::fog, &FogAttrib::colorSum>, GL_FOG_BIT, 0, kHeld),
     // Lines (primitive/lines.cpp) and points (primitive/points.cpp): drawn.

@@ -1,13 +1,14 @@
 // The two builds of the block shader (generic x86-64, AVX2 and FMA) must give
 // the same bits.
+#include "fragment/shade.h"
+
 #include <gtest/gtest.h>
 
 #include <random>
 
+#include "raster/primitive_setup.h"
 #include "raster/raster.h"
 #include "raster/test_surface.h"
-#include "raster/primitive_setup.h"
-#include "fragment/shade.h"
 
 namespace glfixed::raster {
 namespace {
@@ -19,7 +20,7 @@ void shadeAll(const RasterState& st, TestSurface& s, const FixedTriangle& f, con
   PrimitiveSetup t;
   if (!setupTriangle(st, s.fb, f, v[0], v[1], v[2], flat, t)) return;
   fragment::ShadeTarget target = fragment::makeShadeTarget(st, s.fb, t);
-  target.lateDepth = lateDepth;
+  target.lateDepth = target.lateDepth || lateDepth;  // the alpha test sets it
   if (avx2)
     fragment::shadePrimitiveAvx2(t, target);
   else
@@ -55,6 +56,7 @@ TEST(Shade, Avx2MatchesGeneric) {
     st.varyingCount = iter % 2 ? 8 : 4;
     if (iter % 7 == 0) st.colorWrite[iter % 4] = false;
     if (iter % 11 == 0) a.fb.color.setFormat(PixelFormat::kBGRA), b.fb.color.setFormat(PixelFormat::kBGRA);
+    st.alphaTest = fragment::makeAlphaTest(iter % 3 == 2, funcs[(iter / 3) % 8], unit(rng));
     for (int tri = 0; tri < 4; ++tri) {
       WindowVertex v[3];
       for (auto& x : v) {
@@ -85,7 +87,8 @@ TEST(Shade, Avx2MatchesGeneric) {
 // what the test before it gives, colour write masks and no colour included.
 TEST(Shade, LateDepthTestMatchesEarly) {
   std::mt19937 rng(9);
-  const GLenum funcs[] = {GL_LESS, GL_LEQUAL, GL_EQUAL, GL_GREATER, GL_GEQUAL, GL_NOTEQUAL, GL_ALWAYS, GL_NEVER};
+  const GLenum funcs[] = {GL_LESS,   GL_LEQUAL,   GL_EQUAL,  GL_GREATER,
+                          GL_GEQUAL, GL_NOTEQUAL, GL_ALWAYS, GL_NEVER};
   size_t drawn = 0;
   for (int iter = 0; iter < 200; ++iter) {
     const int depthBits = iter % 3 == 0 ? 16 : 24;

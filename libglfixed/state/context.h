@@ -50,7 +50,7 @@ struct ClientAttribEntry {
 
 class Context {
  public:
-  explicit Context(int depthBits);
+  explicit Context(int depthBits, int stencilBits = 0);
 
   // API state, by attribute group.
   CurrentAttrib current;
@@ -91,6 +91,7 @@ class Context {
 
   Framebuffer framebuffer;
   int requestedDepthBits;
+  int requestedStencilBits;  // 0 or 8: the stencil buffer (framebuffer/framebuffer.h)
   bool viewportInitialized = false;  // the first MakeCurrent sets the viewport
   // At the context's first surface (unless glViewport came first): the
   // viewport and scissor box take its size (GL 2.1 §2.11.1, §4.1.2), and the

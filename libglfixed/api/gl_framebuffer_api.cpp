@@ -77,6 +77,16 @@ GLAPI void APIENTRY glClear(GLbitfield mask) {
     else
       fb.depth.fill(depthToUnorm(ctx->depth.clearDepth, fb.depth.bits()));
   }
+  // §4.2.3: the stencil under the front write mask (Mesa clears with the
+  // front face's mask whatever the back one says: probed).
+  const uint32_t stencilWriteMask = ctx->stencil.face[0].writeMask & 0xffu;
+  if ((mask & GL_STENCIL_BUFFER_BIT) && stencilWriteMask && fb.depth.stencilBits() > 0) {
+    const uint32_t value = static_cast<uint32_t>(ctx->stencil.clearValue) & 0xffu;
+    if (byQuad)
+      clearStencil(fb, value, stencilWriteMask, box);
+    else
+      fb.depth.fillStencil(value, stencilWriteMask);
+  }
 }
 
 GLAPI void APIENTRY glReadPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum format, GLenum type,
@@ -101,7 +111,8 @@ GLAPI void APIENTRY glReadPixels(GLint x, GLint y, GLsizei width, GLsizei height
     if (bytes == 0) return;
     pixels = b->data.data() + offset;
   }
-  GLenum error = readPixels(ctx->framebuffer, ctx->pixelStore, x, y, width, height, format, type, pixels);
+  GLenum error = readPixels(ctx->framebuffer, ctx->pixelStore, x, y, width, height, format, type, pixels,
+                            ctx->pixelMode.indexShift, ctx->pixelMode.indexOffset);
   if (error != GL_NO_ERROR) ctx->recordError(error);
 }
 

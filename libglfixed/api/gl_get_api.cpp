@@ -47,6 +47,8 @@ bool queryHeldState(Context& ctx, GLenum pname, StateValue& out) {
   const ColorBufferAttrib& cb = ctx.colorBuffer;
   const StencilAttrib::Face& front = ctx.stencil.face[0];
   const StencilAttrib::Face& back = ctx.stencil.face[1];
+  const int stencilMax = (1 << ctx.framebuffer.depth.stencilBits()) - 1;
+  const auto stencilRef = [stencilMax](GLint ref) { return ref < 0 ? 0 : (ref > stencilMax ? stencilMax : ref); };
   switch (pname) {
     case GL_FOG_MODE: out.set({double(ctx.fog.mode)}); return true;
     case GL_FOG_DENSITY: out.set({ctx.fog.density}); return true;
@@ -82,12 +84,18 @@ bool queryHeldState(Context& ctx, GLenum pname, StateValue& out) {
                double(ctx.scissor.height)});
       return true;
     case GL_STENCIL_FUNC: out.set({double(front.func)}); return true;
-    case GL_STENCIL_REF: out.set({double(front.ref)}); return true;
+    // The reference as the test uses it: clamped to the buffer's range
+    // (0 without a stencil buffer; Mesa's _mesa_get_stencil_ref).
+    case GL_STENCIL_REF: out.set({double(stencilRef(front.ref))}); return true;
+    case GL_STENCIL_VALUE_MASK: out.set({double(front.valueMask)}); return true;
+    case GL_STENCIL_WRITEMASK: out.set({double(front.writeMask)}); return true;
+    case GL_STENCIL_BACK_VALUE_MASK: out.set({double(back.valueMask)}); return true;
+    case GL_STENCIL_BACK_WRITEMASK: out.set({double(back.writeMask)}); return true;
     case GL_STENCIL_FAIL: out.set({double(front.fail)}); return true;
     case GL_STENCIL_PASS_DEPTH_FAIL: out.set({double(front.depthFail)}); return true;
     case GL_STENCIL_PASS_DEPTH_PASS: out.set({double(front.depthPass)}); return true;
     case GL_STENCIL_BACK_FUNC: out.set({double(back.func)}); return true;
-    case GL_STENCIL_BACK_REF: out.set({double(back.ref)}); return true;
+    case GL_STENCIL_BACK_REF: out.set({double(stencilRef(back.ref))}); return true;
     case GL_STENCIL_BACK_FAIL: out.set({double(back.fail)}); return true;
     case GL_STENCIL_BACK_PASS_DEPTH_FAIL: out.set({double(back.depthFail)}); return true;
     case GL_STENCIL_BACK_PASS_DEPTH_PASS: out.set({double(back.depthPass)}); return true;
@@ -247,10 +255,11 @@ bool queryCoreState(Context& ctx, GLenum pname, StateValue& out) {
     case GL_RED_BITS: case GL_GREEN_BITS: case GL_BLUE_BITS: out.set({8.0}); return true;
     case GL_ALPHA_BITS: out.set({hasAlpha ? 8.0 : 0.0}); return true;
     case GL_DEPTH_BITS: out.set({double(fb.depth.bits())}); return true;
+    case GL_STENCIL_BITS: out.set({double(fb.depth.stencilBits())}); return true;
     case GL_ACCUM_RED_BITS: case GL_ACCUM_GREEN_BITS: case GL_ACCUM_BLUE_BITS: case GL_ACCUM_ALPHA_BITS:
       out.set({fb.accum.present() ? 16.0 : 0.0});
       return true;
-    case GL_STENCIL_BITS: case GL_INDEX_BITS: case GL_AUX_BUFFERS:
+    case GL_INDEX_BITS: case GL_AUX_BUFFERS:
       out.set({0.0});
       return true;
     case GL_RGBA_MODE: out.set({1.0}); return true;

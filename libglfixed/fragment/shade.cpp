@@ -84,6 +84,22 @@ ShadeTarget makeShadeTarget(const raster::RasterState& state, Framebuffer& fb,
     s.depthWrite = state.depthWrite;
     s.depthFunc = state.depthFunc;
   }
+  // The stencil test of the primitive's face; on a Z24S8 buffer the depth
+  // test too goes through the stencil step, which keeps the stencil byte.
+  DepthBuffer& db = fb.depth;
+  if (db.stencilBits() && (state.stencil.enabled || (state.depthTest && db.packedStencil()))) {
+    StencilTarget& st = s.stencil;
+    st.active = true;
+    st.test = state.stencil.enabled;
+    if (st.test) {
+      st.face = state.stencil.face[t.backFacing ? 1 : 0];
+      const StencilFaceState& f = st.face;
+      st.writes = f.writeMask != 0 && (f.fail != GL_KEEP || f.depthFail != GL_KEEP || f.depthPass != GL_KEEP);
+    }
+    st.packed = db.packedStencil() ? static_cast<uint32_t*>(db.data()) : nullptr;
+    st.bytes = db.packedStencil() ? nullptr : db.stencil8();
+    st.width = db.width();
+  }
   s.secondary = t.varyingCount == 8;
   s.stipple = t.stipple ? t.stipple : (state.stippleEveryPrimitive ? state.polygonStipple : nullptr);
   s.textures = state.textures && state.textures->unitCount > 0 ? state.textures : nullptr;

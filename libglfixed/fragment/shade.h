@@ -10,6 +10,7 @@
 
 #include "fragment/alpha_test_state.h"
 #include "fragment/blend_state.h"
+#include "fragment/stencil_state.h"
 #include "framebuffer/framebuffer.h"
 #include "raster/primitive_setup.h"
 #include "raster/raster.h"
@@ -37,7 +38,10 @@ struct ShadeTarget {
   // fragment's colour can discard it: the alpha test), else before it.
   bool lateDepth = false;
   AlphaTestState alphaTest;  // GL 2.1 §4.1.4, on the colour's alpha byte
-  bool secondary = false;    // colour sum: add varyings 4..6 to 0..2 (GL 2.1 §3.9)
+  // The stencil test (GL 2.1 §4.1.5) of the primitive's face, run with the
+  // depth test in one step (fragment/stencil.inc).
+  StencilTarget stencil;
+  bool secondary = false;  // colour sum: add varyings 4..6 to 0..2 (GL 2.1 §3.9)
   // The polygon stipple the fragments pass (null: none): the setup's
   // (triangles), or the state's for every primitive while Mesa's stipple
   // shader stays bound (RasterState::stippleEveryPrimitive).

@@ -47,20 +47,35 @@ void Framebuffer::selectBuffers(GLenum drawBuffer, GLenum readBuffer) {
   read = view(buffersNamed(readBuffer, true), readFront, readBack);
 }
 
-void DepthBuffer::resize(int width, int height, int bits) {
+void DepthBuffer::resize(int width, int height, int bits, int stencilBits) {
   bits_ = bits;
+  stencilBits_ = stencilBits > 0 ? 8 : 0;
   width_ = width;
   height_ = height;
-  size_t n = bits ? static_cast<size_t>(width) * height : 0;
+  size_t n = static_cast<size_t>(width) * height;
   d16_.assign(bits == 16 ? n : 0, 0);
   d32_.assign(bits == 24 ? n : 0, 0);
+  s8_.assign(stencilBits_ && bits == 0 ? n : 0, 0);
 }
 
 void DepthBuffer::fill(uint32_t v) {
   if (bits_ == 16)
     std::fill(d16_.begin(), d16_.end(), static_cast<uint16_t>(v));
-  else
+  else if (!packedStencil())
     std::fill(d32_.begin(), d32_.end(), v);
+  else
+    for (uint32_t& w : d32_) w = (w & 0xff000000u) | (v & 0xffffffu);
+}
+
+void DepthBuffer::fillStencil(uint32_t v, uint32_t writeMask) {
+  writeMask &= 0xffu;
+  v &= writeMask;
+  if (packedStencil()) {
+    const uint32_t keep = ~(writeMask << 24);
+    for (uint32_t& w : d32_) w = (w & keep) | (v << 24);
+  } else {
+    for (uint8_t& s : s8_) s = static_cast<uint8_t>((s & ~writeMask) | v);
+  }
 }
 
 uint8_t floatToUnorm8(float v) {

@@ -53,32 +53,59 @@ struct ColorBuffer {
 // Depth values are unsigned integers of `bits` bits (0 = no depth buffer,
 // 16, or 24). Mesa's OSMesa hands out 2 bytes a value for 16 bits and 4 bytes
 // a value for 24 bits (REFERENCE.md, "Depth and limits"); so do we.
+// The stencil buffer (8 bits or none) lives here too, as Mesa allocates it
+// (MESA_FACTS.md "Stencil"): with a 24-bit depth buffer it is the top byte of
+// each 32-bit word (Z24_UNORM_S8_UINT, which OSMesaGetDepthBuffer hands out
+// as it is); without a depth buffer it is a buffer of bytes of its own.
 class DepthBuffer {
  public:
-  void resize(int width, int height, int bits);
+  void resize(int width, int height, int bits, int stencilBits = 0);
   int bits() const { return bits_; }
+  int stencilBits() const { return stencilBits_; }
+  // The stencil is the top byte of the depth words (else, with stencil
+  // bits, in stencil8()).
+  bool packedStencil() const { return stencilBits_ != 0 && bits_ == 24; }
   int width() const { return width_; }
   int height() const { return height_; }
   uint32_t maxValue() const { return bits_ == 16 ? 0xffffu : 0xffffffu; }
   int bytesPerValue() const { return bits_ == 16 ? 2 : 4; }
   void* data() { return bits_ == 16 ? static_cast<void*>(d16_.data()) : static_cast<void*>(d32_.data()); }
+  uint8_t* stencil8() { return s8_.data(); }  // the stencil without depth: one byte a pixel
+  // The depth value (without the stencil byte).
   uint32_t get(int x, int y) const {
     size_t i = static_cast<size_t>(y) * width_ + x;
-    return bits_ == 16 ? d16_[i] : d32_[i];
+    return bits_ == 16 ? d16_[i] : d32_[i] & 0xffffffu;
   }
+  // Sets the depth value, keeping the stencil byte.
   void set(int x, int y, uint32_t v) {
     size_t i = static_cast<size_t>(y) * width_ + x;
     if (bits_ == 16)
       d16_[i] = static_cast<uint16_t>(v);
     else
-      d32_[i] = v;
+      d32_[i] = (d32_[i] & 0xff000000u) | (v & 0xffffffu);
   }
-  void fill(uint32_t v);
+  uint32_t getStencil(int x, int y) const {
+    size_t i = static_cast<size_t>(y) * width_ + x;
+    return packedStencil() ? d32_[i] >> 24 : s8_[i];
+  }
+  // The stencil value, bits of `writeMask` only (GL 2.1 §4.2.2).
+  void setStencil(int x, int y, uint32_t v, uint32_t writeMask) {
+    size_t i = static_cast<size_t>(y) * width_ + x;
+    const uint32_t old = getStencil(x, y);
+    const uint32_t s = ((old & ~writeMask) | (v & writeMask)) & 0xffu;
+    if (packedStencil())
+      d32_[i] = (d32_[i] & 0xffffffu) | (s << 24);
+    else
+      s8_[i] = static_cast<uint8_t>(s);
+  }
+  void fill(uint32_t v);                                // depth, keeping the stencil
+  void fillStencil(uint32_t v, uint32_t writeMask);      // stencil, keeping the depth
 
  private:
-  int bits_ = 0, width_ = 0, height_ = 0;
+  int bits_ = 0, stencilBits_ = 0, width_ = 0, height_ = 0;
   std::vector<uint16_t> d16_;
   std::vector<uint32_t> d32_;
+  std::vector<uint8_t> s8_;
 };
 
 // The window-system surface behind a framebuffer (platform/surface.h), told

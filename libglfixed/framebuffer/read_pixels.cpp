@@ -5,6 +5,17 @@
 #include <cstring>
 #include <vector>
 
+// EXT_packed_depth_stencil and ARB_depth_buffer_float (not in GL 2.1's gl.h).
+#ifndef GL_DEPTH_STENCIL
+#define GL_DEPTH_STENCIL 0x84F9
+#endif
+#ifndef GL_UNSIGNED_INT_24_8
+#define GL_UNSIGNED_INT_24_8 0x84FA
+#endif
+#ifndef GL_FLOAT_32_UNSIGNED_INT_24_8_REV
+#define GL_FLOAT_32_UNSIGNED_INT_24_8_REV 0x8DAD
+#endif
+
 namespace glfixed {
 
 void clearDepth(Framebuffer& fb, uint32_t value, const PixelBox& box) {
@@ -21,6 +32,12 @@ PixelBox scissoredBox(const Framebuffer& fb, const ScissorAttrib& s) {
     box.y1 = static_cast<int>(std::min<long long>(box.y1, static_cast<long long>(s.y) + s.height));
   }
   return box;
+}
+
+void clearStencil(Framebuffer& fb, uint32_t value, uint32_t writeMask, const PixelBox& box) {
+  for (int y = std::max(box.y0, 0); y < std::min(box.y1, fb.depth.height()); ++y)
+    for (int x = std::max(box.x0, 0); x < std::min(box.x1, fb.depth.width()); ++x)
+      fb.depth.setStencil(x, y, value, writeMask);
 }
 
 void clearColor(const ColorBuffer& c, const ColorBufferAttrib& cb, const PixelBox& box) {
@@ -63,6 +80,7 @@ namespace {
 int componentsOf(GLenum format) {
   switch (format) {
     case GL_RED: case GL_GREEN: case GL_BLUE: case GL_ALPHA: case GL_LUMINANCE: case GL_DEPTH_COMPONENT:
+    case GL_STENCIL_INDEX: case GL_DEPTH_STENCIL:
       return 1;
     case GL_LUMINANCE_ALPHA: return 2;
     case GL_RGB: case GL_BGR: return 3;
@@ -82,6 +100,11 @@ int bytesOf(GLenum type) {
 
 bool isPacked8888(GLenum type) { return type == GL_UNSIGNED_INT_8_8_8_8 || type == GL_UNSIGNED_INT_8_8_8_8_REV; }
 
+// EXT_packed_depth_stencil and ARB_depth_buffer_float's depth-stencil pixels.
+bool isDepthStencilType(GLenum type) {
+  return type == GL_UNSIGNED_INT_24_8 || type == GL_FLOAT_32_UNSIGNED_INT_24_8_REV;
+}
+
 bool isKnownType(GLenum type) {
   switch (type) {
     case GL_UNSIGNED_BYTE: case GL_BYTE: case GL_UNSIGNED_SHORT: case GL_SHORT: case GL_UNSIGNED_INT:
@@ -90,6 +113,7 @@ bool isKnownType(GLenum type) {
     case GL_UNSIGNED_SHORT_5_6_5_REV: case GL_UNSIGNED_SHORT_4_4_4_4: case GL_UNSIGNED_SHORT_4_4_4_4_REV:
     case GL_UNSIGNED_SHORT_5_5_5_1: case GL_UNSIGNED_SHORT_1_5_5_5_REV: case GL_UNSIGNED_INT_8_8_8_8:
     case GL_UNSIGNED_INT_8_8_8_8_REV: case GL_UNSIGNED_INT_10_10_10_2: case GL_UNSIGNED_INT_2_10_10_10_REV:
+    case GL_UNSIGNED_INT_24_8: case GL_FLOAT_32_UNSIGNED_INT_24_8_REV:
       return true;
     default:
       return false;
@@ -97,7 +121,29 @@ bool isKnownType(GLenum type) {
 }
 
 bool isKnownFormat(GLenum format) {
-  return componentsOf(format) > 0 || format == GL_COLOR_INDEX || format == GL_STENCIL_INDEX;
+  return componentsOf(format) > 0 || format == GL_COLOR_INDEX;
+}
+
+// The bytes of one pixel of a depth-stencil type.
+int depthStencilBytes(GLenum type) { return type == GL_FLOAT_32_UNSIGNED_INT_24_8_REV ? 8 : 4; }
+
+// A stencil index stored as `type` (Mesa's packing: GL_BYTE keeps the low 7 bits).
+void storeStencil(uint8_t* dst, GLenum type, uint32_t s) {
+  switch (type) {
+    case GL_UNSIGNED_BYTE: *dst = static_cast<uint8_t>(s); break;
+    case GL_BYTE: *dst = static_cast<uint8_t>(s & 0x7f); break;
+    case GL_UNSIGNED_SHORT: case GL_SHORT: {
+      const uint16_t v = static_cast<uint16_t>(s);
+      std::memcpy(dst, &v, 2);
+      break;
+    }
+    case GL_UNSIGNED_INT: case GL_INT: std::memcpy(dst, &s, 4); break;
+    case GL_FLOAT: {
+      const float f = static_cast<float>(s);
+      std::memcpy(dst, &f, 4);
+      break;
+    }
+  }
 }
 
 // Stores one component, converted from [0,1] float (or the raw unsigned
@@ -134,8 +180,10 @@ void storeComponent(uint8_t* dst, GLenum type, float f) {
 
 size_t packedImageBytes(const PixelStoreAttrib& pack, GLsizei width, GLsizei height, GLenum format, GLenum type) {
   if (width <= 0 || height <= 0 || !isKnownFormat(format) || !isKnownType(type)) return 0;
-  const int componentBytes = isPacked8888(type) ? 1 : bytesOf(type);
-  const size_t pixelBytes = isPacked8888(type) ? 4 : static_cast<size_t>(componentsOf(format)) * componentBytes;
+  const int componentBytes = isPacked8888(type) || isDepthStencilType(type) ? 1 : bytesOf(type);
+  const size_t pixelBytes = isPacked8888(type)        ? 4
+                            : isDepthStencilType(type) ? depthStencilBytes(type)
+                                                       : static_cast<size_t>(componentsOf(format)) * componentBytes;
   const size_t rowPixels = pack.packRowLength > 0 ? pack.packRowLength : width;
   size_t rowBytes = rowPixels * pixelBytes;
   const size_t align = static_cast<size_t>(pack.packAlignment);
@@ -145,19 +193,29 @@ size_t packedImageBytes(const PixelStoreAttrib& pack, GLsizei width, GLsizei hei
 }
 
 GLenum readPixels(const Framebuffer& fb, const PixelStoreAttrib& pack, GLint x, GLint y, GLsizei width,
-                  GLsizei height, GLenum format, GLenum type, void* pixels) {
+                  GLsizei height, GLenum format, GLenum type, void* pixels, int indexShift, int indexOffset) {
   if (!isKnownFormat(format) || !isKnownType(type)) return GL_INVALID_ENUM;
-  if (format == GL_COLOR_INDEX || format == GL_STENCIL_INDEX) return GL_INVALID_OPERATION;  // RGBA, no stencil
-  if (format == GL_DEPTH_COMPONENT && fb.depth.bits() == 0) return GL_INVALID_OPERATION;
+  // EXT_packed_depth_stencil: GL_DEPTH_STENCIL only with its types (else an
+  // invalid enum), its types only with it (else an invalid operation).
+  if (format == GL_DEPTH_STENCIL && !isDepthStencilType(type)) return GL_INVALID_ENUM;
+  if (format != GL_DEPTH_STENCIL && isDepthStencilType(type)) return GL_INVALID_OPERATION;
+  if (format == GL_COLOR_INDEX) return GL_INVALID_OPERATION;  // RGBA only
+  const bool stencil = format == GL_STENCIL_INDEX, depthStencil = format == GL_DEPTH_STENCIL;
+  if ((stencil || depthStencil) && fb.depth.stencilBits() == 0) return GL_INVALID_OPERATION;
+  if ((format == GL_DEPTH_COMPONENT || depthStencil) && fb.depth.bits() == 0) return GL_INVALID_OPERATION;
   if (isPacked8888(type) && format != GL_RGBA && format != GL_BGRA) return GL_INVALID_OPERATION;
-  if (!isPacked8888(type) && bytesOf(type) == 0) return GL_INVALID_OPERATION;  // other packed types: not yet
+  if (!isPacked8888(type) && !isDepthStencilType(type) && bytesOf(type) == 0)
+    return GL_INVALID_OPERATION;  // other packed types: not yet
+  const bool depth = format == GL_DEPTH_COMPONENT || stencil || depthStencil;  // read from the depth-stencil buffer
   // Mesa: colour from a read buffer of GL_NONE is an invalid operation.
-  if (format != GL_DEPTH_COMPONENT && fb.hasSurface() && !fb.read.pixels) return GL_INVALID_OPERATION;
+  if (!depth && fb.hasSurface() && !fb.read.pixels) return GL_INVALID_OPERATION;
   if (!fb.hasSurface() || !pixels || width == 0 || height == 0) return GL_NO_ERROR;
 
   const int components = componentsOf(format);
-  const int componentBytes = isPacked8888(type) ? 1 : bytesOf(type);
-  const int pixelBytes = isPacked8888(type) ? 4 : components * componentBytes;
+  const int componentBytes = isPacked8888(type) || isDepthStencilType(type) ? 1 : bytesOf(type);
+  const int pixelBytes = isPacked8888(type)        ? 4
+                         : isDepthStencilType(type) ? depthStencilBytes(type)
+                                                    : components * componentBytes;
   const int rowPixels = pack.packRowLength > 0 ? pack.packRowLength : width;
   // GL 2.1 §4.3.2 / §3.6.4: rows are padded to the pack alignment.
   size_t rowBytes = static_cast<size_t>(rowPixels) * pixelBytes;
@@ -174,7 +232,6 @@ GLenum readPixels(const Framebuffer& fb, const PixelStoreAttrib& pack, GLint x, 
   };
   int row0, row1, col0, col1;
   // The read buffer may be another surface's (glXMakeContextCurrent).
-  const bool depth = format == GL_DEPTH_COMPONENT;
   inside(y, height, depth ? fb.depth.height() : fb.read.height, row0, row1);
   inside(x, width, depth ? fb.depth.width() : fb.read.width, col0, col1);
   for (int row = row0; row < row1; ++row) {
@@ -183,6 +240,26 @@ GLenum readPixels(const Framebuffer& fb, const PixelStoreAttrib& pack, GLint x, 
     for (int col = col0; col < col1; ++col) {
       const int wx = x + col;
       uint8_t* dst = dstRow + static_cast<size_t>(col) * pixelBytes;
+      if (stencil) {
+        // GL 2.1 §4.3.2: the index shifted and offset; Mesa does it on bytes.
+        uint32_t s = fb.depth.getStencil(wx, wy);
+        if (indexShift || indexOffset)
+          s = static_cast<uint8_t>((indexShift >= 0 ? s << indexShift : s >> -indexShift) + indexOffset);
+        storeStencil(dst, type, s);
+        continue;
+      }
+      if (depthStencil) {
+        const uint32_t d = fb.depth.get(wx, wy), s = fb.depth.getStencil(wx, wy);
+        if (type == GL_UNSIGNED_INT_24_8) {
+          const uint32_t v = (d << 8) | s;
+          std::memcpy(dst, &v, 4);
+        } else {  // a float depth, then the stencil in the low byte of a word
+          const float z = static_cast<float>(d * (1.0 / fb.depth.maxValue()));
+          std::memcpy(dst, &z, 4);
+          std::memcpy(dst + 4, &s, 4);
+        }
+        continue;
+      }
       if (format == GL_DEPTH_COMPONENT) {
         const uint32_t d = fb.depth.get(wx, wy);
         const int bits = fb.depth.bits();

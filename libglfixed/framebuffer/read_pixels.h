@@ -25,6 +25,8 @@ PixelBox scissoredBox(const Framebuffer& fb, const ScissorAttrib& scissor);
 void clearColor(const ColorBuffer& buffer, const ColorBufferAttrib& colorBuffer, const PixelBox& box);
 // glClear of the depth buffer: `value` into the pixels of `box`.
 void clearDepth(Framebuffer& fb, uint32_t value, const PixelBox& box);
+// glClear of the stencil buffer: `value` into the pixels of `box`, the bits of `writeMask` only.
+void clearStencil(Framebuffer& fb, uint32_t value, uint32_t writeMask, const PixelBox& box);
 
 // glReadPixels (GL 2.1 §4.3.2): returns the GL error to record, or GL_NO_ERROR.
 // Pixels outside the framebuffer are left untouched in `pixels`.
@@ -33,7 +35,10 @@ void clearDepth(Framebuffer& fb, uint32_t value, const PixelBox& box);
 size_t packedImageBytes(const PixelStoreAttrib& pack, GLsizei width, GLsizei height, GLenum format,
                         GLenum type);
 
+// GL_STENCIL_INDEX values are shifted and offset by GL_INDEX_SHIFT and
+// GL_INDEX_OFFSET (§3.6.5).
 GLenum readPixels(const Framebuffer& fb, const PixelStoreAttrib& pack, GLint x, GLint y, GLsizei width,
-                  GLsizei height, GLenum format, GLenum type, void* pixels);
+                  GLsizei height, GLenum format, GLenum type, void* pixels, int indexShift = 0,
+                  int indexOffset = 0);
 
 }  // namespace glfixed

@@ -93,6 +93,21 @@ primitive::PrimitiveState primitiveState(const Context& ctx, GLenum mode, bool s
                                        cb.blendEquationRGB, cb.blendEquationAlpha, color, cb.colorLogicOp,
                                        cb.logicOpMode);
   }
+  // Without a stencil buffer the stencil test always passes (GL 2.1 §4.1.5).
+  r.stencil.enabled = ctx.stencil.test && ctx.framebuffer.depth.stencilBits() > 0;
+  if (r.stencil.enabled)
+    for (int i = 0; i < 2; ++i) {
+      const StencilAttrib::Face& from = ctx.stencil.face[i];
+      fragment::StencilFaceState& to = r.stencil.face[i];
+      to.func = from.func;
+      to.ref = from.ref < 0 ? 0 : (from.ref > 255 ? 255 : from.ref);
+      to.valueMask = static_cast<int32_t>(from.valueMask & 0xffu);
+      to.writeMask = static_cast<int32_t>(from.writeMask & 0xffu);
+      to.fail = from.fail;
+      to.depthFail = from.depthFail;
+      to.depthPass = from.depthPass;
+    }
+  r.frontFace = ctx.polygon.frontFace;
   r.varyingCount = separateSpecular ? 8 : 4;
   r.alphaTest =
       fragment::makeAlphaTest(ctx.colorBuffer.alphaTest, ctx.colorBuffer.alphaFunc, ctx.colorBuffer.alphaRef);

@@ -3,8 +3,8 @@
 // 8 alpha bits (alpha needs a depth-32 visual on X11), single- or
 // double-buffered, with a depth buffer of 0, 16 or 24 bits, and the 24-bit
 // one with or without 8 stencil bits (Mesa pairs stencil with 24-bit depth).
-// There is no stencil buffer yet (issue 15): GL_STENCIL_BITS says 0 whatever
-// the configuration says, but programs that ask for one still start.
+// The stencil buffer is the top byte of the depth words, as Mesa's
+// Z24_UNORM_S8_UINT (framebuffer/framebuffer.h).
 #pragma once
 
 #include <array>

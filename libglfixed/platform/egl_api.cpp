@@ -250,7 +250,7 @@ EGLAPI EGLContext EGLAPIENTRY eglCreateContext(EGLDisplay dpy, EGLConfig config,
   auto ctx = std::unique_ptr<EglContext>(new (std::nothrow) EglContext);
   if (!ctx) return fail(EGL_BAD_ALLOC, EGL_NO_CONTEXT);
   try {
-    ctx->context = std::make_unique<glfixed::Context>(c->depthBits);
+    ctx->context = std::make_unique<glfixed::Context>(c->depthBits, c->stencilBits);
   } catch (const std::bad_alloc&) {
     return fail(EGL_BAD_ALLOC, EGL_NO_CONTEXT);
   }

@@ -103,7 +103,7 @@ struct __GLXcontextRec {
   bool destroyed = false;  // glXDestroyContext while current: freed at release
   std::shared_ptr<glfixed::platform::glx::GlxDrawable> draw, read;
   __GLXcontextRec(Display* d, const glfixed::platform::glx::FBConfig* c, unsigned long contextId)
-      : context(c->config->depthBits), display(d), config(c), id(contextId) {}
+      : context(c->config->depthBits, c->config->stencilBits), display(d), config(c), id(contextId) {}
 };
 
 namespace glfixed::platform::glx {

@@ -20,7 +20,7 @@ struct osmesa_context {
   int width = 0, height = 0;
   GLint userRowLength = 0;
   bool yUp = true;
-  explicit osmesa_context(PixelFormat f, int depthBits) : context(depthBits), format(f) {}
+  osmesa_context(PixelFormat f, int depthBits, int stencilBits) : context(depthBits, stencilBits), format(f) {}
 };
 
 namespace {
@@ -52,7 +52,8 @@ GLenum osmesaFormatOf(PixelFormat f) {
 
 // Mesa's choice of depth buffer: with a stencil buffer any depth request gives
 // 24 bits (a packed depth-stencil format); without one, 16..23 bits give 16,
-// 24 and more give 24, and fewer than 16 give none.
+// 24 and more give 24, and fewer than 16 give none. Any stencil request gives
+// 8 bits, packed with a 24-bit depth, or alone without depth (probed).
 int depthBitsFor(GLint depthBits, GLint stencilBits) {
   if (depthBits <= 0) return 0;
   if (stencilBits > 0) return 24;
@@ -90,7 +91,8 @@ GLAPI OSMesaContext APIENTRY OSMesaCreateContextExt(GLenum format, GLint depthBi
     std::fprintf(stderr, "libglfixed: OSMesaCreateContext: unsupported format 0x%x\n", format);
     return nullptr;
   }
-  osmesa_context* c = new (std::nothrow) osmesa_context(f, depthBitsFor(depthBits, stencilBits));
+  osmesa_context* c =
+      new (std::nothrow) osmesa_context(f, depthBitsFor(depthBits, stencilBits), stencilBits > 0 ? 8 : 0);
   if (!c) return nullptr;
   c->context.requestedAccum = accumBits > 0;
   if (sharelist) c->context.shareObjectsWith(sharelist->context);
@@ -159,8 +161,9 @@ GLAPI GLboolean APIENTRY OSMesaMakeCurrent(OSMesaContext ctx, void* buffer, GLen
   ctx->height = height;
   bindColorBuffer(*ctx, buffer);
   glfixed::DepthBuffer& depth = ctx->context.framebuffer.depth;
-  if (depth.width() != width || depth.height() != height || depth.bits() != ctx->context.requestedDepthBits)
-    depth.resize(width, height, ctx->context.requestedDepthBits);
+  if (depth.width() != width || depth.height() != height || depth.bits() != ctx->context.requestedDepthBits ||
+      depth.stencilBits() != ctx->context.requestedStencilBits)
+    depth.resize(width, height, ctx->context.requestedDepthBits, ctx->context.requestedStencilBits);
   glfixed::AccumBuffer& accum = ctx->context.framebuffer.accum;
   if (accum.width() != width || accum.height() != height || accum.present() != ctx->context.requestedAccum)
     accum.resize(width, height, ctx->context.requestedAccum);

@@ -103,8 +103,8 @@ void bindSurfaces(Context& ctx, Surface* draw, Surface* read) {
   // The depth buffer is the context's, sized to the draw surface (a surface
   // shared by two contexts does not share its depth values).
   if (draw && (fb.depth.width() != draw->width() || fb.depth.height() != draw->height() ||
-               fb.depth.bits() != ctx.requestedDepthBits))
-    fb.depth.resize(draw->width(), draw->height(), ctx.requestedDepthBits);
+               fb.depth.bits() != ctx.requestedDepthBits || fb.depth.stencilBits() != ctx.requestedStencilBits))
+    fb.depth.resize(draw->width(), draw->height(), ctx.requestedDepthBits, ctx.requestedStencilBits);
   fb.selectBuffers(ctx.colorBuffer.drawBuffer, ctx.pixelMode.readBuffer);
 }
 

@@ -59,14 +59,15 @@ void setupTriangle(const BatchContext& b, const ClipVertex& v0, const ClipVertex
     flat = flatValues;
   }
 
+  // The stencil test's face (GL 2.0 §4.1.5) is the triangle's own.
   if (sign > 0) {
-    raster::rasterCcwTriangle(b.raster, b.fb, fixed, w[0], w[1], w[2], flat);
+    raster::rasterCcwTriangle(b.raster, b.fb, fixed, w[0], w[1], w[2], flat, !front);
   } else if (b.state.firstVertexConvention) {
     raster::FixedTriangle r = {{fixed.x[0], fixed.x[2], fixed.x[1]}, {fixed.y[0], fixed.y[2], fixed.y[1]}};
-    raster::rasterCcwTriangle(b.raster, b.fb, r, w[0], w[2], w[1], flat);
+    raster::rasterCcwTriangle(b.raster, b.fb, r, w[0], w[2], w[1], flat, !front);
   } else {
     raster::FixedTriangle r = {{fixed.x[1], fixed.x[0], fixed.x[2]}, {fixed.y[1], fixed.y[0], fixed.y[2]}};
-    raster::rasterCcwTriangle(b.raster, b.fb, r, w[1], w[0], w[2], flat);
+    raster::rasterCcwTriangle(b.raster, b.fb, r, w[1], w[0], w[2], flat, !front);
   }
 }
 

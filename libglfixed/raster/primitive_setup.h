@@ -54,6 +54,10 @@ struct PrimitiveSetup {
   // y % 32 is set.
   float zOffset = 0;
   const uint32_t* stipple = nullptr;
+  // The primitive faces back: the stencil test uses the back state. Only
+  // triangles face back (llvmpipe's lines and points, also those of
+  // GL_LINE and GL_POINT polygons, face front: probed).
+  bool backFacing = false;
 };
 
 }  // namespace glfixed::raster
@@ -139,6 +143,9 @@ void drawStageTriangle(const RasterState& state, Framebuffer& fb, const WindowVe
   const PlaneSetup planes(a.x, a.y, b.x, b.y, c.x, c.y);
   t.w = planes.plane(a.oneOverW, b.oneOverW, c.oneOverW);
   addPlanes(t, planes, order);
+  // The stencil test's face: the aapoint stage's triangles face back, the
+  // aaline stage's front, whatever their winding and glFrontFace (probed).
+  t.backFacing = t.aaPoint;
   fragment::shadePrimitive(state, fb, t);
 }
 

@@ -6,6 +6,7 @@
 
 #include "fragment/alpha_test_state.h"
 #include "fragment/blend_state.h"
+#include "fragment/stencil_state.h"
 #include "framebuffer/framebuffer.h"
 #include "raster/edge.h"
 
@@ -44,6 +45,10 @@ struct RasterState {
   GLenum depthFunc = GL_LESS;
   bool depthWrite = true;
   bool colorWrite[4] = {true, true, true, true};
+  // The stencil test (both faces) and which winding faces front
+  // (glFrontFace): a triangle's set-up gives its facing (PrimitiveSetup).
+  fragment::StencilState stencil;
+  GLenum frontFace = GL_CCW;
   int varyingCount = 4;  // 4: primary colour; 8: primary + secondary, summed per fragment
   // Bit u: the vertices carry unit u's texture coordinates (varyings
   // kTexCoordVarying + 4 u ...), interpolated perspective-correct, never flat.
@@ -107,9 +112,10 @@ int snapTriangle(const WindowVertex& v0, const WindowVertex& v1, const WindowVer
 // Rasterizes a triangle whose snapped area is positive, with the vertices in
 // the order llvmpipe's setup sees them. `flatVaryings` non-null: the colours
 // in state.flatGroups take these values at every fragment.
+// `backFacing`: the triangle faces back (the stencil test's back state).
 void rasterCcwTriangle(const RasterState& state, Framebuffer& fb, const FixedTriangle& fixed,
                        const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2,
-                       const float* flatVaryings);
+                       const float* flatVaryings, bool backFacing = false);
 
 // Snap, then draw whichever way the triangle faces (no culling): a clockwise
 // triangle is reordered as llvmpipe does (see firstVertexConvention).

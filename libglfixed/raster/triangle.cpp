@@ -104,9 +104,10 @@ bool setupTriangle(const RasterState& state, const Framebuffer& fb, const FixedT
 
 void rasterCcwTriangle(const RasterState& state, Framebuffer& fb, const FixedTriangle& fixed,
                        const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2,
-                       const float* flatVaryings) {
+                       const float* flatVaryings, bool backFacing) {
   PrimitiveSetup t;
   if (!setupTriangle(state, fb, fixed, v0, v1, v2, flatVaryings, t)) return;
+  t.backFacing = backFacing;
   fragment::shadePrimitive(state, fb, t);
 }
 
@@ -114,16 +115,17 @@ void drawTriangle(const RasterState& state, Framebuffer& fb, const WindowVertex&
                   const WindowVertex& v2, const float* flatVaryings) {
   FixedTriangle f;
   const int sign = snapTriangle(v0, v1, v2, f);
+  const bool backFacing = (sign > 0) != (state.frontFace == GL_CCW);
   if (sign > 0) {
-    rasterCcwTriangle(state, fb, f, v0, v1, v2, flatVaryings);
+    rasterCcwTriangle(state, fb, f, v0, v1, v2, flatVaryings, backFacing);
   } else if (sign < 0) {
     // llvmpipe swaps two vertices so that the provoking one keeps its slot.
     if (state.firstVertexConvention) {
       FixedTriangle r = {{f.x[0], f.x[2], f.x[1]}, {f.y[0], f.y[2], f.y[1]}};
-      rasterCcwTriangle(state, fb, r, v0, v2, v1, flatVaryings);
+      rasterCcwTriangle(state, fb, r, v0, v2, v1, flatVaryings, backFacing);
     } else {
       FixedTriangle r = {{f.x[1], f.x[0], f.x[2]}, {f.y[1], f.y[0], f.y[2]}};
-      rasterCcwTriangle(state, fb, r, v1, v0, v2, flatVaryings);
+      rasterCcwTriangle(state, fb, r, v1, v0, v2, flatVaryings, backFacing);
     }
   }
 }

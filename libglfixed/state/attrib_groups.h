@@ -35,9 +35,13 @@ struct StencilAttrib {
   struct Face {
     GLenum func = GL_ALWAYS;
     GLint ref = 0;
-    GLuint valueMask = ~0u;
+    GLuint valueMask = 0xff;  // Mesa's initial masks read 0xff (probed), not all ones
     GLenum fail = GL_KEEP, depthFail = GL_KEEP, depthPass = GL_KEEP;
-    GLuint writeMask = ~0u;
+    GLuint writeMask = 0xff;
+    bool operator==(const Face& o) const {
+      return func == o.func && ref == o.ref && valueMask == o.valueMask && fail == o.fail &&
+             depthFail == o.depthFail && depthPass == o.depthPass && writeMask == o.writeMask;
+    }
   };
   bool test = false;
   std::array<Face, 2> face;  // [front], [back]

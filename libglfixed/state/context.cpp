@@ -9,7 +9,8 @@ thread_local Context* tCurrent = nullptr;
 Context* currentContext() { return tCurrent; }
 void setCurrentContext(Context* ctx) { tCurrent = ctx; }
 
-Context::Context(int depthBits) : requestedDepthBits(depthBits) {}
+Context::Context(int depthBits, int stencilBits)
+    : requestedDepthBits(depthBits), requestedStencilBits(stencilBits > 0 ? 8 : 0) {}
 
 const vertex::VertexState& Context::validate() {
   if (dirty_ & (kDirtyModelview | kDirtyProjection)) {

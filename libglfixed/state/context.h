@@ -51,7 +51,7 @@ struct ClientAttribEntry {
 
 class Context {
  public:
-  explicit Context(int depthBits);
+  explicit Context(int depthBits, int stencilBits = 0);
 
   // API state, by attribute group.
   CurrentAttrib current;
@@ -92,6 +92,7 @@ class Context {
 
   Framebuffer framebuffer;
   int requestedDepthBits;
+  int requestedStencilBits;  // 0 or 8: the stencil buffer (framebuffer/framebuffer.h)
   // An accumulation buffer (OSMesaCreateContextExt's accumBits > 0); Mesa's
   // always has 16 bits a channel.
   bool requestedAccum = false;

@@ -67,6 +67,10 @@ static unsigned int read_depth_value(const unsigned char *p, int bytes)
     return v;
 }
 
+static int stencil_bits;
+
+void scene_set_stencil_bits(int bits) { stencil_bits = bits; }
+
 int scene_width(void) { return S.width; }
 int scene_height(void) { return S.height; }
 
@@ -134,7 +138,7 @@ int scene_begin_try(int argc, char **argv, const scene_options *opts)
     if (!S.buffer) fail("out of memory");
     memset(S.buffer, CANARY, S.buffer_bytes + GUARD_BYTES);
 
-    S.ctx = OSMesaCreateContextExt(S.ctx_format, depth_bits, 0, g_accum_bits, NULL);
+    S.ctx = OSMesaCreateContextExt(S.ctx_format, depth_bits, stencil_bits, g_accum_bits, NULL);
     if (!S.ctx) {
         S.refused = "create";
         return -1;

@@ -77,6 +77,10 @@ typedef struct {
     int row_length;        /* OSMESA_ROW_LENGTH in pixels, 0 = don't set */
 } scene_options;
 
+/* The stencil bits the next scene_begin* asks OSMesaCreateContextExt for
+ * (default 0: no stencil buffer). */
+void scene_set_stencil_bits(int bits);
+
 /* RGBA, 24-bit depth, y_up default. */
 void scene_begin(int argc, char **argv, int width, int height);
 /* Before scene_begin*: the accumulation bits OSMesaCreateContextExt is asked for (default 0). */

@@ -6,6 +6,7 @@
 
 #include "api/api.h"
 #include "api/list_record.h"
+#include "api/pixel_buffer.h"
 #include "state/buffer_objects.h"
 
 using namespace glfixed;
@@ -65,30 +66,13 @@ struct BitmapLayout {
   size_t bytes() const { return byteOf(31, 31) + 1; }  // the extent the 32 rows use
 };
 
-// The client memory or pixel buffer bytes the bitmap is read from or written
-// to: null with `error` set when a bound buffer is mapped or too small
-// (§4.3.5), null without error for a null client pointer.
-template <typename Byte>
-Byte* bitmapMemory(Context& ctx, GLuint bufferName, Byte* pointer, const BitmapLayout& layout,
-                   GLenum& error) {
-  error = GL_NO_ERROR;
-  if (!bufferName) return pointer;
-  BufferObject* b = ctx.buffers.find(bufferName);
-  const size_t offset = reinterpret_cast<uintptr_t>(pointer);
-  if (!b || b->mapped || offset > b->data.size() || layout.bytes() > b->data.size() - offset) {
-    error = GL_INVALID_OPERATION;
-    return nullptr;
-  }
-  return reinterpret_cast<Byte*>(b->data.data() + offset);
-}
-
 // Reads the pattern through the unpack state; false when nothing is read.
 bool unpackStipple(Context& ctx, const GLubyte* mask, std::array<uint32_t, 32>& words) {
   const PixelStoreAttrib& p = ctx.pixelStore;
   const BitmapLayout layout =
       BitmapLayout::of(p.unpackAlignment, p.unpackRowLength, p.unpackSkipPixels, p.unpackSkipRows);
   GLenum error;
-  const GLubyte* bytes = bitmapMemory(ctx, p.pixelUnpackBufferBinding, mask, layout, error);
+  const GLubyte* bytes = api::pixelBufferMemory(ctx, p.pixelUnpackBufferBinding, mask, layout.bytes(), error);
   if (error != GL_NO_ERROR) ctx.recordError(error);
   if (!bytes) return false;
   for (int row = 0; row < 32; ++row) {
@@ -134,7 +118,7 @@ GLAPI void APIENTRY glGetPolygonStipple(GLubyte* mask) {
   const BitmapLayout layout =
       BitmapLayout::of(p.packAlignment, p.packRowLength, p.packSkipPixels, p.packSkipRows);
   GLenum error;
-  GLubyte* bytes = bitmapMemory(*ctx, p.pixelPackBufferBinding, mask, layout, error);
+  GLubyte* bytes = api::pixelBufferMemory(*ctx, p.pixelPackBufferBinding, mask, layout.bytes(), error);
   if (error != GL_NO_ERROR) return ctx->recordError(error);
   if (!bytes) return;
   for (int row = 0; row < 32; ++row) {

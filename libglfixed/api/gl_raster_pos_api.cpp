@@ -12,6 +12,7 @@
 
 #include "api/api.h"
 #include "api/list_record.h"
+#include "api/pixel_buffer.h"
 #include "pipeline/pixel_rect.h"
 #include "state/lighting_attrib.h"
 #include "texture/unpack.h"
@@ -222,22 +223,6 @@ void pixelsInFeedbackOrSelect(Context& ctx, GLenum token) {
   if (ctx.renderMode.mode == GL_FEEDBACK) feedbackRasterPos(ctx, token);
 }
 
-// The client memory of an unpack: `pixels`, or an offset into the bound
-// pixel unpack buffer (§4.3.5): null with `error` set when the buffer is
-// mapped or too small, null without error for no data.
-const uint8_t* unpackSource(Context& ctx, const void* pixels, size_t extent, GLenum& error) {
-  error = GL_NO_ERROR;
-  const GLuint name = ctx.pixelStore.pixelUnpackBufferBinding;
-  if (!name) return static_cast<const uint8_t*>(pixels);
-  BufferObject* b = ctx.buffers.find(name);
-  const size_t offset = reinterpret_cast<uintptr_t>(pixels);
-  if (!b || b->mapped || offset > b->data.size() || extent > b->data.size() - offset) {
-    error = GL_INVALID_OPERATION;
-    return nullptr;
-  }
-  return b->data.data() + offset;
-}
-
 // glBitmap's bits through the unpack state (§3.6.4 with GL_COLOR_INDEX,
 // GL_BITMAP; most significant bit first) into Mesa's tight rows
 // (pipeline::bitmapRowBytes). False (error recorded if any) when nothing
@@ -247,7 +232,8 @@ bool unpackBitmap(Context& ctx, int width, int height, const GLubyte* bitmap, st
   store.unpackSkipImages = 0;  // a 2D image
   const texture::ClientLayout layout = texture::unpackLayout(store, width, height, GL_COLOR_INDEX, GL_BITMAP);
   GLenum error;
-  const uint8_t* src = unpackSource(ctx, bitmap, layout.extent(width, height, 1), error);
+  const uint8_t* src = api::pixelBufferMemory(ctx, ctx.pixelStore.pixelUnpackBufferBinding, bitmap,
+                                              layout.extent(width, height, 1), error);
   if (error) ctx.recordError(error);
   if (!src) return false;
   const int rowBytes = pipeline::bitmapRowBytes(width);

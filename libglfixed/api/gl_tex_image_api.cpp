@@ -7,6 +7,7 @@
 
 #include "api/api.h"
 #include "api/list_record.h"
+#include "api/pixel_buffer.h"
 #include "api/tex_image_common.h"
 #include "texture/internal_format.h"
 #include "texture/texture_image.h"
@@ -19,23 +20,6 @@ using texture::TextureImage;
 using texture::TextureObject;
 
 namespace {
-
-// The client memory of an unpack: `pixels` itself, or an offset into the
-// bound pixel unpack buffer (§4.3.5). Null with `error` set if the image
-// would read past the buffer's end or the buffer is mapped; null without
-// error for no data.
-const uint8_t* unpackSource(Context& ctx, const void* pixels, size_t extent, GLenum& error) {
-  error = GL_NO_ERROR;
-  const GLuint name = ctx.pixelStore.pixelUnpackBufferBinding;
-  if (!name) return static_cast<const uint8_t*>(pixels);
-  BufferObject* b = ctx.buffers.find(name);
-  const size_t offset = reinterpret_cast<uintptr_t>(pixels);
-  if (!b || b->mapped || offset > b->data.size() || extent > b->data.size() - offset) {
-    error = GL_INVALID_OPERATION;
-    return nullptr;
-  }
-  return b->data.data() + offset;
-}
 
 // The checks glTexImage and glTexSubImage share on format and type against
 // the image's base format.
@@ -86,7 +70,9 @@ void texImage(int dims, GLenum target, GLint level, GLint internalFormat, GLsize
 
   const texture::ClientLayout layout = texture::unpackLayout(ctx->pixelStore, width, height, format, type);
   GLenum error;
-  const uint8_t* source = unpackSource(*ctx, pixels, layout.extent(width, height, depth), error);
+  const uint8_t* source =
+      api::pixelBufferMemory(*ctx, ctx->pixelStore.pixelUnpackBufferBinding,
+                             static_cast<const uint8_t*>(pixels), layout.extent(width, height, depth), error);
   if (error) return ctx->recordError(error);
 
   api::beginStateChange(*ctx, GL_TEXTURE_BIT);
@@ -120,7 +106,9 @@ void texSubImage(int dims, GLenum target, GLint level, GLint x, GLint y, GLint z
     return ctx->recordError(GL_INVALID_VALUE);
   const texture::ClientLayout layout = texture::unpackLayout(ctx->pixelStore, width, height, format, type);
   GLenum error;
-  const uint8_t* source = unpackSource(*ctx, pixels, layout.extent(width, height, depth), error);
+  const uint8_t* source =
+      api::pixelBufferMemory(*ctx, ctx->pixelStore.pixelUnpackBufferBinding,
+                             static_cast<const uint8_t*>(pixels), layout.extent(width, height, depth), error);
   if (error) return ctx->recordError(error);
   if (!source || width == 0 || height == 0 || depth == 0) return;
   api::beginStateChange(*ctx, GL_TEXTURE_BIT);

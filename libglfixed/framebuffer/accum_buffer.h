@@ -33,7 +33,6 @@ class AccumBuffer {
   // `writeMask` only.
   void returnTo(const ColorBuffer& dst, const PixelBox& box, float value, const bool writeMask[4]) const;
 
-  int16_t at(int x, int y, int channel) const { return values_[index(x, y) + channel]; }
 
  private:
   size_t index(int x, int y) const { return (static_cast<size_t>(y) * width_ + x) * 4; }

@@ -287,6 +287,7 @@ void drawCoverageTriangle(const RasterState& state, Framebuffer& fb, const Windo
       state, fb, v, flatVaryings, [&](PrimitiveSetup& t, const PlaneSetup& ps, const int order[3]) {
         const float w[3] = {v[order[0]]->oneOverW, v[order[1]]->oneOverW, v[order[2]]->oneOverW};
         t.lineCoverage = true;
+        t.stipple = nullptr;  // not a polygon: no polygon stipple (piglit point-line-no-cull)
         t.coverageX = ps.plane(across[order[0]] * w[0], across[order[1]] * w[1], across[order[2]] * w[2]);
         t.coverageZ = ps.plane(along[order[0]] * w[0], along[order[1]] * w[1], along[order[2]] * w[2]);
         t.coverageHalfWidth = halfWidth;

@@ -147,6 +147,8 @@ void drawSmoothPointTriangle(const RasterState& state, Framebuffer& fb, const Wi
                     [&](PrimitiveSetup& t, const PlaneSetup& ps, const int order[3]) {
                       const WindowVertex &a = *v[order[0]], &b = *v[order[1]], &c = *v[order[2]];
                       t.aaPoint = true;
+                      // Not a polygon: no polygon stipple (piglit point-line-no-cull).
+                      t.stipple = nullptr;
                       t.aaS = ps.plane(st[order[0]][0] * a.oneOverW, st[order[1]][0] * b.oneOverW,
                                        st[order[2]][0] * c.oneOverW);
                       t.aaT = ps.plane(st[order[0]][1] * a.oneOverW, st[order[1]][1] * b.oneOverW,

@@ -305,7 +305,7 @@ GLAPI Display* APIENTRY glXGetCurrentDisplay(void) { return currentGlxContext() 
 GLAPI int APIENTRY glXQueryContext(Display* dpy, GLXContext ctx, int attribute, int* value) {
   if (!ctx || !value) return GLX_BAD_CONTEXT;
   switch (attribute) {
-    case GLX_FBCONFIG_ID: *value = ctx->config->config->id; return Success;
+    case GLX_FBCONFIG_ID: *value = ctx->config->id(); return Success;
     case GLX_RENDER_TYPE: *value = GLX_RGBA_TYPE; return Success;
     case GLX_SCREEN: *value = ctx->config->screen; return Success;
     default: return GLX_BAD_ATTRIBUTE;

@@ -74,7 +74,8 @@ void assignVisuals(Display* display, int screen, std::vector<std::unique_ptr<FBC
   for (auto& c : configs)
     if (c->visualDepth == depth) ofDepth.push_back(c.get());
   std::stable_partition(ofDepth.begin(), ofDepth.end(), [](const FBConfig* c) {
-    return c->config->doubleBuffered && c->config->depthBits == 24 && c->config->stencilBits == 8;
+    return c->config->doubleBuffered && c->config->depthBits == 24 && c->config->stencilBits == 8 &&
+           !c->accumBits;
   });
   const std::vector<VisualID> visuals = visualsOf(display, screen, depth);
   if (visuals.empty()) return;
@@ -89,8 +90,9 @@ void makeConfigs(DisplayState& ds) {
   ds.screens.resize(screens);
   for (int s = 0; s < screens; ++s) {
     auto& list = ds.screens[s];
-    for (const FramebufferConfig& c : framebufferConfigs())
-      list.push_back(std::make_unique<FBConfig>(FBConfig{&c, s, 0, c.visualDepth()}));
+    for (int accum : {0, 16})
+      for (const FramebufferConfig& c : framebufferConfigs())
+        list.push_back(std::make_unique<FBConfig>(FBConfig{&c, s, 0, c.visualDepth(), accum}));
     assignVisuals(ds.display, s, list, 24);
     assignVisuals(ds.display, s, list, 32);
   }
@@ -110,7 +112,7 @@ const FBConfig* configForVisual(DisplayState& ds, const XVisualInfo* visual) {
   if (chosen != ds.visualChoice.end()) return chosen->second;
   for (auto& c : ds.screens[visual->screen])  // the first is the fullest (assignVisuals)
     if (c->visualId == visual->visualid && c->config->doubleBuffered && c->config->depthBits == 24 &&
-        c->config->stencilBits == 8)
+        c->config->stencilBits == 8 && !c->accumBits)
       return c.get();
   for (auto& c : ds.screens[visual->screen])
     if (c->visualId == visual->visualid) return c.get();
@@ -147,13 +149,11 @@ int configAttrib(const FBConfig& fb, int attribute, int* value) {
     case GLX_ACCUM_RED_SIZE:
     case GLX_ACCUM_GREEN_SIZE:
     case GLX_ACCUM_BLUE_SIZE:
-    case GLX_ACCUM_ALPHA_SIZE:
-      v = 0;  // no accumulation buffer
-      break;
+    case GLX_ACCUM_ALPHA_SIZE: v = fb.accumBits; break;
     case GLX_SAMPLE_BUFFERS:
     case GLX_SAMPLES: v = 0; break;
     case GLX_X_VISUAL_TYPE: v = hasVisual ? GLX_TRUE_COLOR : GLX_NONE; break;
-    case GLX_CONFIG_CAVEAT: v = GLX_NONE; break;
+    case GLX_CONFIG_CAVEAT: v = fb.accumBits ? GLX_SLOW_CONFIG : GLX_NONE; break;
     case GLX_TRANSPARENT_TYPE: v = GLX_NONE; break;
     case GLX_TRANSPARENT_INDEX_VALUE:
     case GLX_TRANSPARENT_RED_VALUE:
@@ -170,7 +170,7 @@ int configAttrib(const FBConfig& fb, int attribute, int* value) {
       break;
     case GLX_RENDER_TYPE: v = GLX_RGBA_BIT; break;
     case GLX_X_RENDERABLE: v = hasVisual; break;
-    case GLX_FBCONFIG_ID: v = c.id; break;
+    case GLX_FBCONFIG_ID: v = fb.id(); break;
     case GLX_MAX_PBUFFER_WIDTH:
     case GLX_MAX_PBUFFER_HEIGHT: v = kMaxViewportSize; break;
     case GLX_MAX_PBUFFER_PIXELS: v = kMaxViewportSize * kMaxViewportSize; break;
@@ -274,23 +274,25 @@ bool matches(const FBConfig& fb, const Request& r) {
     configAttrib(fb, attribute, &v);
     return v;
   };
-  if (r.fbconfigId != kDontCare) return fb.config->id == r.fbconfigId;  // all else ignored
+  if (r.fbconfigId != kDontCare) return fb.id() == r.fbconfigId;  // all else ignored
   return atLeast(get(GLX_BUFFER_SIZE), r.bufferSize) && exactly(0, r.level) &&
          exactly(get(GLX_DOUBLEBUFFER), r.doubleBuffer) && exactly(False, r.stereo) &&
          atLeast(0, r.auxBuffers) && atLeast(8, r.red) && atLeast(8, r.green) && atLeast(8, r.blue) &&
          atLeast(fb.config->alphaBits, r.alpha) && atLeast(fb.config->depthBits, r.depth) &&
-         atLeast(fb.config->stencilBits, r.stencil) && atLeast(0, r.accumRed) && atLeast(0, r.accumGreen) &&
-         atLeast(0, r.accumBlue) && atLeast(0, r.accumAlpha) && atLeast(0, r.sampleBuffers) &&
+         atLeast(fb.config->stencilBits, r.stencil) && atLeast(fb.accumBits, r.accumRed) &&
+         atLeast(fb.accumBits, r.accumGreen) && atLeast(fb.accumBits, r.accumBlue) &&
+         atLeast(fb.accumBits, r.accumAlpha) && atLeast(0, r.sampleBuffers) &&
          atLeast(0, r.samples) && (r.renderType != kDontCare && (r.renderType & GLX_RGBA_BIT)) &&
          mask(get(GLX_DRAWABLE_TYPE), r.drawableType) && exactly(get(GLX_X_RENDERABLE), r.xRenderable) &&
-         exactly(get(GLX_X_VISUAL_TYPE), r.visualType) && exactly(GLX_NONE, r.caveat) &&
+         exactly(get(GLX_X_VISUAL_TYPE), r.visualType) && exactly(get(GLX_CONFIG_CAVEAT), r.caveat) &&
          exactly(GLX_NONE, r.transparentType);
 }
 
 // Mesa's order (glxcmds.c fbconfig_compare, after GLX 1.4 table 3.4): for
 // colour, depth and accumulation sizes "larger" puts a size of 0 first (it
-// stands in for "the components asked for"); then single before double
-// buffering, the smaller stencil, the configuration id.
+// stands in for "the components asked for"); the caveat before them all
+// (GLX_NONE before GLX_SLOW_CONFIG); then single before double buffering,
+// the smaller stencil, the accumulation buffer, the configuration id.
 int preferLargerOrZero(int a, int b) {
   if (a == b) return 0;
   if (a == 0) return -1;
@@ -300,13 +302,15 @@ int preferLargerOrZero(int a, int b) {
 
 bool before(const FBConfig* x, const FBConfig* y) {
   const FramebufferConfig &a = *x->config, &b = *y->config;
+  if (x->accumBits != y->accumBits && (!x->accumBits || !y->accumBits)) return !x->accumBits;  // caveat
   if (int c = preferLargerOrZero(a.alphaBits, b.alphaBits)) return c < 0;
   if (a.bufferBits() != b.bufferBits()) return a.bufferBits() < b.bufferBits();
   if (a.doubleBuffered != b.doubleBuffered) return !a.doubleBuffered;
   if (int c = preferLargerOrZero(a.depthBits, b.depthBits)) return c < 0;
   if (a.stencilBits != b.stencilBits) return a.stencilBits < b.stencilBits;
+  if (int c = preferLargerOrZero(x->accumBits, y->accumBits)) return c < 0;
   if ((x->visualId != 0) != (y->visualId != 0)) return x->visualId != 0;  // GLX_TRUE_COLOR before none
-  return a.id < b.id;
+  return x->id() < y->id();
 }
 
 std::vector<const FBConfig*> choose(DisplayState& ds, int screen, const Request& r, bool needVisual) {
@@ -331,6 +335,10 @@ GLXFBConfig* copyOut(const std::vector<const FBConfig*>& configs, int* count) {
 }  // namespace
 
 }  // namespace glfixed::platform::glx
+
+int __GLXFBConfigRec::id() const {
+  return config->id + (accumBits ? static_cast<int>(glfixed::platform::framebufferConfigs().size()) : 0);
+}
 
 using namespace glfixed::platform::glx;
 

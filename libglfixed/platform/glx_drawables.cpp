@@ -276,7 +276,7 @@ GLAPI void APIENTRY glXQueryDrawable(Display* dpy, GLXDrawable draw, int attribu
     case GLX_HEIGHT: *value = height; break;
     case GLX_PRESERVED_CONTENTS: *value = d ? d->preserved : True; break;
     case GLX_LARGEST_PBUFFER: *value = d ? d->largest : False; break;
-    case GLX_FBCONFIG_ID: *value = d && d->config ? d->config->config->id : 0; break;
+    case GLX_FBCONFIG_ID: *value = d && d->config ? d->config->id() : 0; break;
     case GLX_SWAP_INTERVAL_EXT: *value = d ? d->swapInterval : 0; break;
     case GLX_MAX_SWAP_INTERVAL_EXT: *value = kMaxSwapInterval; break;
     default: break;  // BadValue: *value is left alone

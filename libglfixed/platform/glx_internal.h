@@ -29,6 +29,11 @@ struct __GLXFBConfigRec {
   int screen;
   VisualID visualId;  // 0: no visual (a pbuffer-only configuration)
   int visualDepth;
+  // GLX offers each configuration twice, as Mesa's GLX does: without an
+  // accumulation buffer, and with a 16-bit one (RGBA), caveat
+  // GLX_SLOW_CONFIG. EGL has no accumulation buffer and offers the first.
+  int accumBits = 0;
+  int id() const;  // GLX_FBCONFIG_ID: the twin with accumulation after all the others
 };
 
 namespace glfixed::platform::glx {
@@ -103,7 +108,9 @@ struct __GLXcontextRec {
   bool destroyed = false;  // glXDestroyContext while current: freed at release
   std::shared_ptr<glfixed::platform::glx::GlxDrawable> draw, read;
   __GLXcontextRec(Display* d, const glfixed::platform::glx::FBConfig* c, unsigned long contextId)
-      : context(c->config->depthBits, c->config->stencilBits), display(d), config(c), id(contextId) {}
+      : context(c->config->depthBits, c->config->stencilBits), display(d), config(c), id(contextId) {
+    context.requestedAccum = c->accumBits > 0;
+  }
 };
 
 namespace glfixed::platform::glx {

@@ -105,6 +105,10 @@ void bindSurfaces(Context& ctx, Surface* draw, Surface* read) {
   if (draw && (fb.depth.width() != draw->width() || fb.depth.height() != draw->height() ||
                fb.depth.bits() != ctx.requestedDepthBits || fb.depth.stencilBits() != ctx.requestedStencilBits))
     fb.depth.resize(draw->width(), draw->height(), ctx.requestedDepthBits, ctx.requestedStencilBits);
+  // So is the accumulation buffer of a GLX configuration that has one.
+  if (draw && (fb.accum.width() != draw->width() || fb.accum.height() != draw->height() ||
+               fb.accum.present() != ctx.requestedAccum))
+    fb.accum.resize(draw->width(), draw->height(), ctx.requestedAccum);
   fb.selectBuffers(ctx.colorBuffer.drawBuffer, ctx.pixelMode.readBuffer);
 }
 

@@ -163,7 +163,12 @@ TEST_F(GlxTest, ChooseVisualFollowsTheAttributes) {
   XFree(vis);
 
   EXPECT_EQ(chooseVisual({GLX_RGBA, GLX_STEREO}), nullptr);
-  EXPECT_EQ(chooseVisual({GLX_RGBA, GLX_ACCUM_RED_SIZE, 1}), nullptr);  // no accumulation buffer
+  // Without an accumulation buffer asked for, none of the accumulation
+  // configurations (GLX_SLOW_CONFIG, as Mesa's) comes first.
+  vis = chooseVisual({GLX_RGBA, GLX_DOUBLEBUFFER, GLX_DEPTH_SIZE, 24, GLX_STENCIL_SIZE, 8});
+  ASSERT_NE(vis, nullptr);
+  EXPECT_EQ(config(vis, GLX_ACCUM_RED_SIZE), 0);
+  XFree(vis);
   // As Mesa: no GLX_RGBA still gives an RGBA visual; an unknown attribute
   // is skipped with its value.
   vis = chooseVisual({GLX_DOUBLEBUFFER});
@@ -175,6 +180,57 @@ TEST_F(GlxTest, ChooseVisualFollowsTheAttributes) {
   ASSERT_NE(vis, nullptr);
   EXPECT_EQ(config(vis, GLX_DOUBLEBUFFER), False);  // GLX_DOUBLEBUFFER was 0x7777's value
   EXPECT_EQ(config(vis, GLX_DEPTH_SIZE), 24);
+  XFree(vis);
+}
+
+// Mesa's GLX offers every configuration also with a 16-bit accumulation
+// buffer (caveat GLX_SLOW_CONFIG); a context made with one has the buffer.
+TEST_F(GlxTest, AccumulationBufferConfigs) {
+  XVisualInfo* vis = chooseVisual({GLX_RGBA, GLX_DOUBLEBUFFER, GLX_DEPTH_SIZE, 1, GLX_ACCUM_RED_SIZE, 1});
+  ASSERT_NE(vis, nullptr);
+  EXPECT_EQ(config(vis, GLX_ACCUM_RED_SIZE), 16);
+  EXPECT_EQ(config(vis, GLX_ACCUM_ALPHA_SIZE), 16);
+  EXPECT_EQ(config(vis, GLX_DOUBLEBUFFER), True);
+  const Window win = makeWindow(vis, 16, 16);
+  GLXContext ctx = glXCreateContext(dpy_, vis, nullptr, True);
+  ASSERT_NE(ctx, nullptr);
+  ASSERT_TRUE(glXMakeCurrent(dpy_, win, ctx));
+  GLint bits = 0;
+  glGetIntegerv(GL_ACCUM_RED_BITS, &bits);
+  EXPECT_EQ(bits, 16);
+  glClearColor(0.5f, 0.5f, 0.5f, 1);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glAccum(GL_LOAD, 0.5f);
+  glAccum(GL_RETURN, 1.0f);
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  GLubyte px[4] = {};
+  glReadPixels(8, 8, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, px);
+  EXPECT_NEAR(px[0], 64, 1);
+  ASSERT_TRUE(glXMakeCurrent(dpy_, None, nullptr));
+  glXDestroyContext(dpy_, ctx);
+  XFree(vis);
+
+  int n = 0;
+  const int slow[] = {GLX_CONFIG_CAVEAT, GLX_SLOW_CONFIG, None};
+  GLXFBConfig* configs = glXChooseFBConfig(dpy_, 0, slow, &n);
+  ASSERT_NE(configs, nullptr);
+  for (int i = 0; i < n; ++i) {
+    int v = 0;
+    glXGetFBConfigAttrib(dpy_, configs[i], GLX_ACCUM_GREEN_SIZE, &v);
+    EXPECT_EQ(v, 16);
+  }
+  XFree(configs);
+  // A context without one: glAccum is GL_INVALID_OPERATION.
+  vis = chooseVisual({GLX_RGBA, GLX_DOUBLEBUFFER});
+  ASSERT_NE(vis, nullptr);
+  EXPECT_EQ(config(vis, GLX_ACCUM_RED_SIZE), 0);
+  const Window plain = makeWindow(vis, 16, 16);
+  ctx = glXCreateContext(dpy_, vis, nullptr, True);
+  ASSERT_TRUE(glXMakeCurrent(dpy_, plain, ctx));
+  glAccum(GL_LOAD, 1.0f);
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_INVALID_OPERATION));
+  ASSERT_TRUE(glXMakeCurrent(dpy_, None, nullptr));
+  glXDestroyContext(dpy_, ctx);
   XFree(vis);
 }
 

@@ -187,6 +187,23 @@ GLAPI void APIENTRY glClearColor(GLclampf r, GLclampf g, GLclampf b, GLclampf a)
   api::setStateWithoutFlush(*ctx, ctx->colorBuffer.clearColor, c, GL_COLOR_BUFFER_BIT);
 }
 
+// Colour-index state of an RGBA context (GL 2.1 §4.2.2, §4.2.3): stored and
+// queried only. Mesa keeps the clear index as an unsigned integer (7.5 reads
+// back 7); values it cannot hold are stored as 0 here.
+GLAPI void APIENTRY glClearIndex(GLfloat c) {
+  if (api::compiled(&glClearIndex, c)) return;
+  Context* ctx = api::contextForSetter();
+  if (!ctx) return;
+  const float index = c >= 0.0f && c < 4294967296.0f ? static_cast<float>(static_cast<uint32_t>(c)) : 0.0f;
+  api::setStateWithoutFlush(*ctx, ctx->colorBuffer.clearIndex, index, GL_COLOR_BUFFER_BIT);
+}
+
+GLAPI void APIENTRY glIndexMask(GLuint mask) {
+  if (api::compiled(&glIndexMask, mask)) return;
+  Context* ctx = api::contextForSetter();
+  if (ctx) api::setState(*ctx, ctx->colorBuffer.indexWriteMask, mask, GL_COLOR_BUFFER_BIT);
+}
+
 GLAPI void APIENTRY glClearDepth(GLclampd depth) {
   if (api::compiled(&glClearDepth, depth)) return;
   Context* ctx = api::contextForSetter();

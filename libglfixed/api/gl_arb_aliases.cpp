@@ -175,6 +175,29 @@ GLAPI void APIENTRY glBlendFuncSeparateINGR(GLenum srcRGB, GLenum dstRGB, GLenum
 GLAPI void APIENTRY glBlendEquationSeparateEXT(GLenum modeRGB, GLenum modeAlpha);
 GLAPI void APIENTRY glBlendEquationSeparateATI(GLenum modeRGB, GLenum modeAlpha);
 
+// ARB_window_pos: glWindowPos under its extension names (api/gl_raster_pos_api.cpp).
+GLAPI void APIENTRY glWindowPos2sARB(GLshort x, GLshort y) { glWindowPos2s(x, y); }
+GLAPI void APIENTRY glWindowPos2svARB(const GLshort* v) { glWindowPos2sv(v); }
+GLAPI void APIENTRY glWindowPos2iARB(GLint x, GLint y) { glWindowPos2i(x, y); }
+GLAPI void APIENTRY glWindowPos2ivARB(const GLint* v) { glWindowPos2iv(v); }
+GLAPI void APIENTRY glWindowPos2fARB(GLfloat x, GLfloat y) { glWindowPos2f(x, y); }
+GLAPI void APIENTRY glWindowPos2fvARB(const GLfloat* v) { glWindowPos2fv(v); }
+GLAPI void APIENTRY glWindowPos2dARB(GLdouble x, GLdouble y) { glWindowPos2d(x, y); }
+GLAPI void APIENTRY glWindowPos2dvARB(const GLdouble* v) { glWindowPos2dv(v); }
+GLAPI void APIENTRY glWindowPos3sARB(GLshort x, GLshort y, GLshort z) { glWindowPos3s(x, y, z); }
+GLAPI void APIENTRY glWindowPos3svARB(const GLshort* v) { glWindowPos3sv(v); }
+GLAPI void APIENTRY glWindowPos3iARB(GLint x, GLint y, GLint z) { glWindowPos3i(x, y, z); }
+GLAPI void APIENTRY glWindowPos3ivARB(const GLint* v) { glWindowPos3iv(v); }
+GLAPI void APIENTRY glWindowPos3fARB(GLfloat x, GLfloat y, GLfloat z) { glWindowPos3f(x, y, z); }
+GLAPI void APIENTRY glWindowPos3fvARB(const GLfloat* v) { glWindowPos3fv(v); }
+GLAPI void APIENTRY glWindowPos3dARB(GLdouble x, GLdouble y, GLdouble z) { glWindowPos3d(x, y, z); }
+GLAPI void APIENTRY glWindowPos3dvARB(const GLdouble* v) { glWindowPos3dv(v); }
+
+// ATI_separate_stencil and EXT_stencil_two_side (api/gl_stencil_api.cpp).
+GLAPI void APIENTRY glStencilFuncSeparateATI(GLenum frontfunc, GLenum backfunc, GLint ref, GLuint mask);
+GLAPI void APIENTRY glStencilOpSeparateATI(GLenum face, GLenum sfail, GLenum dpfail, GLenum dppass);
+GLAPI void APIENTRY glActiveStencilFaceEXT(GLenum face);
+
 }  // extern "C"
 
 namespace glfixed::api {
@@ -256,6 +279,25 @@ const Alias kAliases[] = {
     GLFX_ALIAS(glBlendColorEXT),          GLFX_ALIAS(glBlendEquationEXT),
     GLFX_ALIAS(glBlendFuncSeparateEXT),   GLFX_ALIAS(glBlendFuncSeparateINGR),
     GLFX_ALIAS(glBlendEquationSeparateEXT), GLFX_ALIAS(glBlendEquationSeparateATI),
+    GLFX_ALIAS(glWindowPos2sARB),
+    GLFX_ALIAS(glWindowPos2svARB),
+    GLFX_ALIAS(glWindowPos2iARB),
+    GLFX_ALIAS(glWindowPos2ivARB),
+    GLFX_ALIAS(glWindowPos2fARB),
+    GLFX_ALIAS(glWindowPos2fvARB),
+    GLFX_ALIAS(glWindowPos2dARB),
+    GLFX_ALIAS(glWindowPos2dvARB),
+    GLFX_ALIAS(glWindowPos3sARB),
+    GLFX_ALIAS(glWindowPos3svARB),
+    GLFX_ALIAS(glWindowPos3iARB),
+    GLFX_ALIAS(glWindowPos3ivARB),
+    GLFX_ALIAS(glWindowPos3fARB),
+    GLFX_ALIAS(glWindowPos3fvARB),
+    GLFX_ALIAS(glWindowPos3dARB),
+    GLFX_ALIAS(glWindowPos3dvARB),
+    GLFX_ALIAS(glStencilFuncSeparateATI),
+    GLFX_ALIAS(glStencilOpSeparateATI),
+    GLFX_ALIAS(glActiveStencilFaceEXT),
 };
 #undef GLFX_ALIAS
 }  // namespace

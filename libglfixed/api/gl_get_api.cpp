@@ -45,7 +45,7 @@ bool isNormalizedLightingQuery(GLenum pname) { return pname == GL_LIGHT_MODEL_AM
 // gave back.
 bool queryHeldState(Context& ctx, GLenum pname, StateValue& out) {
   const ColorBufferAttrib& cb = ctx.colorBuffer;
-  const StencilAttrib::Face& front = ctx.stencil.face[0];
+  const StencilAttrib::Face& front = ctx.stencil.face[ctx.stencil.activeFace];
   const StencilAttrib::Face& back = ctx.stencil.face[1];
   const int stencilMax = (1 << ctx.framebuffer.depth.stencilBits()) - 1;
   const auto stencilRef = [stencilMax](GLint ref) { return ref < 0 ? 0 : (ref > stencilMax ? stencilMax : ref); };
@@ -94,6 +94,9 @@ bool queryHeldState(Context& ctx, GLenum pname, StateValue& out) {
     case GL_STENCIL_FAIL: out.set({double(front.fail)}); return true;
     case GL_STENCIL_PASS_DEPTH_FAIL: out.set({double(front.depthFail)}); return true;
     case GL_STENCIL_PASS_DEPTH_PASS: out.set({double(front.depthPass)}); return true;
+    case StencilAttrib::kActiveFaceEXT:
+      out.set({double(ctx.stencil.activeFace ? GL_BACK : GL_FRONT)});
+      return true;
     case GL_STENCIL_BACK_FUNC: out.set({double(back.func)}); return true;
     case GL_STENCIL_BACK_REF: out.set({double(stencilRef(back.ref))}); return true;
     case GL_STENCIL_BACK_FAIL: out.set({double(back.fail)}); return true;
@@ -188,6 +191,7 @@ bool queryCoreState(Context& ctx, GLenum pname, StateValue& out) {
       out.set({c.r, c.g, c.b, c.a}, Kind::kNormalized);
       return true;
     }
+    case GL_INDEX_WRITEMASK: out.set({double(static_cast<int32_t>(ctx.colorBuffer.indexWriteMask))}); return true;
     case GL_COLOR_WRITEMASK: {
       const auto& m = ctx.colorBuffer.writeMask;
       out.set({double(m[0]), double(m[1]), double(m[2]), double(m[3])});

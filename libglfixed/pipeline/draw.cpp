@@ -97,7 +97,8 @@ primitive::PrimitiveState primitiveState(const Context& ctx, GLenum mode, bool s
   r.stencil.enabled = ctx.stencil.test && ctx.framebuffer.depth.stencilBits() > 0;
   if (r.stencil.enabled)
     for (int i = 0; i < 2; ++i) {
-      const StencilAttrib::Face& from = ctx.stencil.face[i];
+      const int back = ctx.stencil.testTwoSide ? 2 : 1;
+      const StencilAttrib::Face& from = ctx.stencil.face[i == 0 ? 0 : back];
       fragment::StencilFaceState& to = r.stencil.face[i];
       to.func = from.func;
       to.ref = from.ref < 0 ? 0 : (from.ref > 255 ? 255 : from.ref);

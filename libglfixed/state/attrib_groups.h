@@ -44,7 +44,18 @@ struct StencilAttrib {
     }
   };
   bool test = false;
-  std::array<Face, 2> face;  // [front], [back]
+  // Mesa keeps three faces (stencil.c): [0] front; [1] the back face of GL
+  // 2.0's Separate commands and ATI_separate_stencil; [2] the back face of
+  // EXT_stencil_two_side, which back-facing primitives use while
+  // GL_STENCIL_TEST_TWO_SIDE_EXT is on. glStencilFunc, glStencilOp and
+  // glStencilMask set [0] and [1], or only [2] while glActiveStencilFaceEXT
+  // names GL_BACK (activeFace 2); the plain queries read [activeFace].
+  std::array<Face, 3> face;
+  // EXT_stencil_two_side's names (not in GL 2.1's gl.h).
+  static constexpr GLenum kTestTwoSideEXT = 0x8910;     // GL_STENCIL_TEST_TWO_SIDE_EXT
+  static constexpr GLenum kActiveFaceEXT = 0x8911;      // GL_ACTIVE_STENCIL_FACE_EXT
+  bool testTwoSide = false;
+  int activeFace = 0;  // 0 (GL_FRONT) or 2 (GL_BACK)
   GLint clearValue = 0;
 };
 

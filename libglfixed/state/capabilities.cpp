@@ -126,6 +126,8 @@ constexpr Capability kTable[] = {
     entry(GL_POLYGON_OFFSET_FILL, field<&Context::polygon, &PolygonAttrib::offsetFill>, GL_POLYGON_BIT, 0,
           kSettable),
     entry(GL_STENCIL_TEST, field<&Context::stencil, &StencilAttrib::test>, GL_STENCIL_BUFFER_BIT, 0, kSettable),
+    entry(StencilAttrib::kTestTwoSideEXT, field<&Context::stencil, &StencilAttrib::testTwoSide>,
+          GL_STENCIL_BUFFER_BIT, 0, kSettable),
     entry(GL_MULTISAMPLE, field<&Context::multisample, &MultisampleAttrib::multisample>, GL_MULTISAMPLE_BIT,
           0, kHeld),
     entry(GL_SAMPLE_ALPHA_TO_COVERAGE,

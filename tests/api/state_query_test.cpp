@@ -546,6 +546,11 @@ TEST_F(StateQueryTest, AdvertisedExtensionsHaveTheirCommands) {
        {"glArrayElementEXT", "glDrawArraysEXT", "glGetPointervEXT", "glVertexPointerEXT",
         "glNormalPointerEXT", "glColorPointerEXT", "glIndexPointerEXT", "glTexCoordPointerEXT",
         "glEdgeFlagPointerEXT"}},
+      {"GL_EXT_stencil_wrap", {}},
+      {"GL_EXT_stencil_two_side", {"glActiveStencilFaceEXT"}},
+      {"GL_ATI_separate_stencil", {"glStencilFuncSeparateATI", "glStencilOpSeparateATI"}},
+      {"GL_ARB_window_pos",
+       {"glWindowPos2sARB", "glWindowPos2svARB", "glWindowPos2iARB", "glWindowPos2ivARB", "glWindowPos2fARB", "glWindowPos2fvARB", "glWindowPos2dARB", "glWindowPos2dvARB", "glWindowPos3sARB", "glWindowPos3svARB", "glWindowPos3iARB", "glWindowPos3ivARB", "glWindowPos3fARB", "glWindowPos3fvARB", "glWindowPos3dARB", "glWindowPos3dvARB"}},
   };
   const char* extensions = reinterpret_cast<const char*>(glGetString(GL_EXTENSIONS));
   ASSERT_NE(extensions, nullptr);
@@ -568,6 +573,42 @@ TEST_F(StateQueryTest, AdvertisedExtensionsHaveTheirCommands) {
     EXPECT_EQ(reinterpret_cast<void*>(OSMesaGetProcAddress(glsl)), nullptr) << glsl;
   EXPECT_EQ(glGetString(GL_SHADING_LANGUAGE_VERSION), nullptr);
   EXPECT_GL_ERROR(GL_INVALID_ENUM);
+}
+
+// The colour-index state of an RGBA context: stored, pushed and listed.
+TEST_F(StateQueryTest, ClearIndexAndIndexMask) {
+  GLint mask = 0;
+  glGetIntegerv(GL_INDEX_WRITEMASK, &mask);
+  EXPECT_EQ(mask, -1);
+  glIndexMask(0x1234);
+  glClearIndex(7.5f);
+  GLfloat index = 0;
+  glGetFloatv(GL_INDEX_CLEAR_VALUE, &index);
+  EXPECT_EQ(index, 7.0f);  // Mesa keeps an unsigned integer
+  glPushAttrib(GL_COLOR_BUFFER_BIT);
+  glIndexMask(5);
+  glClearIndex(2);
+  glPopAttrib();
+  glGetIntegerv(GL_INDEX_WRITEMASK, &mask);
+  EXPECT_EQ(mask, 0x1234);
+  const GLuint list = glGenLists(1);
+  glNewList(list, GL_COMPILE);
+  glIndexMask(9);
+  glEndList();
+  glGetIntegerv(GL_INDEX_WRITEMASK, &mask);
+  EXPECT_EQ(mask, 0x1234);
+  glCallList(list);
+  glGetIntegerv(GL_INDEX_WRITEMASK, &mask);
+  EXPECT_EQ(mask, 9);
+  glDeleteLists(list, 1);
+  glBegin(GL_POINTS);
+  glIndexMask(1);
+  glEnd();
+  EXPECT_GL_ERROR(GL_INVALID_OPERATION);
+  glBegin(GL_POINTS);
+  glClearIndex(1);
+  glEnd();
+  EXPECT_GL_ERROR(GL_INVALID_OPERATION);
 }
 
 TEST_F(StateQueryTest, GetStringOfABadNameIsNullAndInvalidEnum) {

@@ -593,5 +593,132 @@ TEST_F(StencilTest, TwoSidedWrapCancels) {
   EXPECT_EQ(StencilAt(4, 4), 1);
 }
 
+// ---- EXT_stencil_two_side and ATI_separate_stencil ------------------------------
+// Mesa keeps three faces (stencil.c): front, the GL 2.0 back face and the
+// EXT back face, which back faces use while GL_STENCIL_TEST_TWO_SIDE_EXT is on.
+
+constexpr GLenum kStencilTestTwoSideEXT = 0x8910, kActiveStencilFaceEXT = 0x8911;
+using ActiveStencilFace = void(APIENTRY*)(GLenum);
+using StencilFuncSeparateATI = void(APIENTRY*)(GLenum, GLenum, GLint, GLuint);
+using StencilOpSeparateATI = void(APIENTRY*)(GLenum, GLenum, GLenum, GLenum);
+
+int Integer(GLenum pname) {
+  GLint v = -1;
+  glGetIntegerv(pname, &v);
+  return v;
+}
+
+TEST_F(StencilTest, ActiveFaceExtAddressesItsOwnBackFace) {
+  auto activeFace = reinterpret_cast<ActiveStencilFace>(OSMesaGetProcAddress("glActiveStencilFaceEXT"));
+  ASSERT_NE(activeFace, nullptr);
+  EXPECT_EQ(Integer(kActiveStencilFaceEXT), GL_FRONT);
+  EXPECT_FALSE(glIsEnabled(kStencilTestTwoSideEXT));
+  activeFace(GL_BACK);
+  glStencilFunc(GL_LESS, 5, 0x0f);
+  glStencilMask(0x3);
+  glStencilOp(GL_INCR, GL_KEEP, GL_KEEP);
+  // The plain queries read the active face; the GL 2.0 back face is untouched.
+  EXPECT_EQ(Integer(kActiveStencilFaceEXT), GL_BACK);
+  EXPECT_EQ(Integer(GL_STENCIL_FUNC), GL_LESS);
+  EXPECT_EQ(Integer(GL_STENCIL_REF), 5);
+  EXPECT_EQ(Integer(GL_STENCIL_VALUE_MASK), 0x0f);
+  EXPECT_EQ(Integer(GL_STENCIL_WRITEMASK), 0x3);
+  EXPECT_EQ(Integer(GL_STENCIL_FAIL), GL_INCR);
+  EXPECT_EQ(Integer(GL_STENCIL_BACK_FUNC), GL_ALWAYS);
+  EXPECT_EQ(Integer(GL_STENCIL_BACK_WRITEMASK), 0xff);
+  activeFace(GL_FRONT);
+  EXPECT_EQ(Integer(GL_STENCIL_FUNC), GL_ALWAYS);
+  EXPECT_EQ(Integer(GL_STENCIL_WRITEMASK), 0xff);
+  EXPECT_GL_ERROR(GL_NO_ERROR);
+  activeFace(GL_FRONT_AND_BACK);
+  EXPECT_GL_ERROR(GL_INVALID_ENUM);
+  glBegin(GL_POINTS);
+  activeFace(GL_BACK);
+  glEnd();
+  EXPECT_GL_ERROR(GL_INVALID_OPERATION);
+  EXPECT_EQ(Integer(kActiveStencilFaceEXT), GL_FRONT);
+}
+
+TEST_F(StencilTest, TwoSideExtPicksTheBackFace) {
+  auto activeFace = reinterpret_cast<ActiveStencilFace>(OSMesaGetProcAddress("glActiveStencilFaceEXT"));
+  ASSERT_NE(activeFace, nullptr);
+  glEnable(GL_STENCIL_TEST);
+  glStencilOp(GL_REPLACE, GL_REPLACE, GL_REPLACE);
+  glStencilFunc(GL_ALWAYS, 1, 0xff);
+  activeFace(GL_BACK);
+  glStencilFunc(GL_ALWAYS, 2, 0xff);
+  glStencilOp(GL_REPLACE, GL_REPLACE, GL_REPLACE);
+  activeFace(GL_FRONT);
+  glStencilFuncSeparate(GL_BACK, GL_ALWAYS, 3, 0xff);
+  for (int twoSide = 0; twoSide < 2; ++twoSide) {
+    if (twoSide)
+      glEnable(kStencilTestTwoSideEXT);
+    else
+      glDisable(kStencilTestTwoSideEXT);
+    glClear(GL_STENCIL_BUFFER_BIT);
+    Rect(0, 0, 4, 4, true);
+    Rect(8, 0, 12, 4, false);
+    EXPECT_EQ(StencilAt(2, 2), 1) << twoSide;
+    EXPECT_EQ(StencilAt(10, 2), twoSide ? 2 : 3) << twoSide;
+  }
+  // glClear takes the front write mask whichever face is active.
+  activeFace(GL_BACK);
+  glStencilMask(0x0f);
+  activeFace(GL_FRONT);
+  glStencilMask(0xf0);
+  activeFace(GL_BACK);
+  glClearStencil(0xff);
+  glClear(GL_STENCIL_BUFFER_BIT);
+  EXPECT_EQ(StencilAt(10, 2), 0xf2);
+}
+
+TEST_F(StencilTest, TwoSideStateInAttribStackAndLists) {
+  auto activeFace = reinterpret_cast<ActiveStencilFace>(OSMesaGetProcAddress("glActiveStencilFaceEXT"));
+  auto funcATI = reinterpret_cast<StencilFuncSeparateATI>(OSMesaGetProcAddress("glStencilFuncSeparateATI"));
+  auto opATI = reinterpret_cast<StencilOpSeparateATI>(OSMesaGetProcAddress("glStencilOpSeparateATI"));
+  ASSERT_NE(activeFace, nullptr);
+  ASSERT_NE(funcATI, nullptr);
+  ASSERT_NE(opATI, nullptr);
+  glEnable(kStencilTestTwoSideEXT);
+  funcATI(GL_GREATER, GL_EQUAL, 7, 0xf0);
+  EXPECT_EQ(Integer(GL_STENCIL_FUNC), GL_GREATER);
+  EXPECT_EQ(Integer(GL_STENCIL_BACK_FUNC), GL_EQUAL);
+  EXPECT_EQ(Integer(GL_STENCIL_BACK_REF), 7);
+  EXPECT_EQ(Integer(GL_STENCIL_BACK_VALUE_MASK), 0xf0);
+  funcATI(GL_GREATER, GL_FRONT, 7, 0xf0);
+  EXPECT_GL_ERROR(GL_INVALID_ENUM);
+  opATI(GL_BACK, GL_ZERO, GL_REPLACE, GL_INVERT);
+  EXPECT_EQ(Integer(GL_STENCIL_BACK_FAIL), GL_ZERO);
+  EXPECT_EQ(Integer(GL_STENCIL_FAIL), GL_KEEP);
+  glPushAttrib(GL_STENCIL_BUFFER_BIT);
+  activeFace(GL_BACK);
+  glDisable(kStencilTestTwoSideEXT);
+  glPopAttrib();
+  EXPECT_EQ(Integer(kActiveStencilFaceEXT), GL_FRONT);
+  EXPECT_TRUE(glIsEnabled(kStencilTestTwoSideEXT));
+  glPushAttrib(GL_ENABLE_BIT);
+  glDisable(kStencilTestTwoSideEXT);
+  glPopAttrib();
+  EXPECT_TRUE(glIsEnabled(kStencilTestTwoSideEXT));
+  const GLuint list = glGenLists(1);
+  glNewList(list, GL_COMPILE);
+  activeFace(GL_BACK);
+  glStencilFunc(GL_NOTEQUAL, 9, 0xff);
+  funcATI(GL_LEQUAL, GL_GEQUAL, 3, 0x7);
+  glEndList();
+  EXPECT_EQ(Integer(kActiveStencilFaceEXT), GL_FRONT);
+  EXPECT_EQ(Integer(GL_STENCIL_FUNC), GL_GREATER);
+  glCallList(list);
+  EXPECT_EQ(Integer(kActiveStencilFaceEXT), GL_BACK);
+  EXPECT_EQ(Integer(GL_STENCIL_FUNC), GL_NOTEQUAL);
+  EXPECT_EQ(Integer(GL_STENCIL_REF), 9);
+  EXPECT_EQ(Integer(GL_STENCIL_BACK_FUNC), GL_GEQUAL);
+  activeFace(GL_FRONT);
+  EXPECT_EQ(Integer(GL_STENCIL_FUNC), GL_LEQUAL);
+  EXPECT_EQ(Integer(GL_STENCIL_REF), 3);
+  glDeleteLists(list, 1);
+  EXPECT_GL_ERROR(GL_NO_ERROR);
+}
+
 }  // namespace
 }  // namespace glfx_test

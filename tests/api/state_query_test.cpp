@@ -547,6 +547,7 @@ TEST_F(StateQueryTest, AdvertisedExtensionsHaveTheirCommands) {
         "glNormalPointerEXT", "glColorPointerEXT", "glIndexPointerEXT", "glTexCoordPointerEXT",
         "glEdgeFlagPointerEXT"}},
       {"GL_EXT_stencil_wrap", {}},
+      {"GL_EXT_shadow_funcs", {}},
       {"GL_EXT_stencil_two_side", {"glActiveStencilFaceEXT"}},
       {"GL_ATI_separate_stencil", {"glStencilFuncSeparateATI", "glStencilOpSeparateATI"}},
       {"GL_ARB_window_pos",

@@ -8,6 +8,7 @@
 
 #include "api/entry_points.h"
 #include "pipeline/immediate_mode.h"
+#include "pipeline/pixel_rect.h"
 #include "state/context.h"
 
 using glfixed::Context;
@@ -143,8 +144,14 @@ GLAPI void APIENTRY OSMesaDestroyContext(OSMesaContext ctx) {
 
 GLAPI GLboolean APIENTRY OSMesaMakeCurrent(OSMesaContext ctx, void* buffer, GLenum type, GLsizei width,
                                            GLsizei height) {
-  // What the current context still holds is drawn into its buffer first.
-  if (tCurrent) glfixed::pipeline::flushVertices(tCurrent->context);
+  // What the current context still holds is drawn into its buffer first;
+  // its cached bitmaps too when another context (or none) takes over, as
+  // Mesa's _mesa_make_current flushes the old context. The same context on a
+  // new buffer keeps them, and draws them there (measured).
+  if (tCurrent) {
+    glfixed::pipeline::flushVertices(tCurrent->context);
+    if (tCurrent != ctx) glfixed::pipeline::flushBitmapCache(tCurrent->context);
+  }
   if (!ctx && !buffer) {  // release the current context
     tCurrent = nullptr;
     glfixed::setCurrentContext(nullptr);

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "pipeline/immediate_mode.h"
+#include "pipeline/pixel_rect.h"
 #include "state/context.h"
 
 namespace glfixed::platform {
@@ -125,6 +126,7 @@ void makeCurrent(Context* ctx, Surface* draw, Surface* read) {
   Context* previous = currentContext();
   if (previous) {
     pipeline::flushVertices(*previous);
+    if (previous != ctx) pipeline::flushBitmapCache(*previous);  // _mesa_make_current flushes the old context
     // The previous context lets go of its surfaces (an OSMesa context has none).
     if (previous != ctx && (previous->framebuffer.surface || previous->framebuffer.readSurface)) {
       detachAll(*previous);

@@ -24,11 +24,11 @@ constexpr const char* kGLExtensionsString =
     "GL_ARB_transpose_matrix GL_ARB_vertex_buffer_object GL_ATI_blend_equation_separate GL_EXT_bgra "
     "GL_EXT_blend_color GL_EXT_blend_equation_separate GL_EXT_blend_func_separate GL_EXT_blend_minmax "
     "GL_EXT_blend_subtract GL_EXT_copy_texture "
-    "GL_EXT_draw_range_elements GL_EXT_multi_draw_arrays GL_EXT_packed_pixels GL_EXT_point_parameters "
+    "GL_EXT_draw_range_elements GL_EXT_fog_coord GL_EXT_multi_draw_arrays GL_EXT_packed_pixels GL_EXT_point_parameters "
     "GL_EXT_provoking_vertex GL_EXT_rescale_normal GL_EXT_separate_specular_color GL_EXT_subtexture "
     "GL_EXT_texture GL_EXT_texture3D GL_EXT_texture_edge_clamp GL_EXT_texture_env_add "
     "GL_EXT_texture_env_combine GL_EXT_texture_env_dot3 GL_EXT_texture_lod_bias GL_EXT_texture_object "
-    "GL_EXT_vertex_array GL_INGR_blend_func_separate GL_NV_blend_square GL_SGIS_generate_mipmap GL_SGIS_texture_border_clamp GL_SGIS_texture_edge_clamp "
+    "GL_EXT_vertex_array GL_INGR_blend_func_separate GL_NV_blend_square GL_NV_fog_distance GL_SGIS_generate_mipmap GL_SGIS_texture_border_clamp GL_SGIS_texture_edge_clamp "
     "GL_SGIS_texture_lod ";  // a space after the last name, as Mesa's (piglit's glinfo prints it as it is)
 
 // True if a context of version major.minor can be had (the library's own

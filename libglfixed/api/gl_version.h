@@ -3,9 +3,9 @@
 // GetProcAddress, so these promise only what works.
 //
 // GL 2.0 needs GLSL, which the library does not have: the version is 1.5,
-// the last one without shaders. Fog, blending, stencil and the pixel
-// rectangles of GL 1.0-1.4 come later (issue 15); blending and the logic op
-// are here (fragment/blend.inc).
+// the last one without shaders. The pixel rectangles of GL 1.0-1.4 come
+// later (issue 15); blending and the logic op (fragment/blend.inc), the
+// stencil test and fog (fragment/fog.inc) are here.
 // The extensions listed are those whose every command and enum works.
 #pragma once
 

@@ -6,7 +6,8 @@
  * trilinear (GL_LINEAR_MIPMAP_LINEAR) GL_MODULATE texture ("texfill"; 1.5
  * texels a pixel, so every pixel blends two levels), and the same quads
  * blended, SRC_ALPHA / ONE_MINUS_SRC_ALPHA with a diffuse alpha of 0.5
- * ("blendfill": every pixel reads the buffer). Built against Mesa's
+ * ("blendfill": every pixel reads the buffer), and the same quads in GL_EXP2
+ * fog ("fogfill": each pixel's fog factor through llvmpipe's exp2). Built against Mesa's
  * headers; run on Mesa and on the drop-in by bench/run_bench.sh. Prints ms
  * per frame. */
 #define GL_GLEXT_PROTOTYPES 1
@@ -152,12 +153,20 @@ int main(int argc, char **argv) {
         glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
         glEnable(GL_BLEND);
     }
+    const int fogfill = strcmp(what, "fogfill") == 0;
+    if (fogfill) {  /* the fill quads in GL_EXP2 fog */
+        const GLfloat fogColor[4] = {0.5f, 0.55f, 0.6f, 1};
+        glFogfv(GL_FOG_COLOR, fogColor);
+        glFogi(GL_FOG_MODE, GL_EXP2);
+        glFogf(GL_FOG_DENSITY, 0.2f);
+        glEnable(GL_FOG);
+    }
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     glFinish();
     double t1 = now();
     for (int f = 0; f < frames; f++) {
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-        if (strcmp(what, "fill") == 0 || texfill || blendfill) {
+        if (strcmp(what, "fill") == 0 || texfill || blendfill || fogfill) {
             for (int q = 0; q < 8; q++) {  /* 8 full-screen lit quads, back to front */
                 /* texfill: s and t run over 3 texture widths across the 512 pixels (the
                  * window is 6 - z units wide at the quad's depth), shifted per quad */

@@ -10,7 +10,8 @@ exe="$build/bench/bench_lit_spheres"
 declare -A ms
 # texfill: the fill quads under a trilinear (GL_LINEAR_MIPMAP_LINEAR) texture
 # (issue 14). blendfill: the fill quads blended (SRC_ALPHA, ONE_MINUS_SRC_ALPHA).
-for what in geometry list vbo fill texfill blendfill; do
+# fogfill: the fill quads in GL_EXP2 fog (a fog factor per pixel).
+for what in geometry list vbo fill texfill blendfill fogfill; do
   mesa=$(env -u LD_LIBRARY_PATH "$exe" "$frames" "$what")
   ours=$(LD_LIBRARY_PATH="$build/dropin" "$exe" "$frames" "$what")
   echo "Mesa       $mesa"

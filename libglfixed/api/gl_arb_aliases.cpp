@@ -166,6 +166,15 @@ GLAPI void APIENTRY glPrioritizeTexturesEXT(GLsizei n, const GLuint* textures, c
   glPrioritizeTextures(n, textures, priorities);
 }
 
+// EXT_fog_coord: the GL 1.4 fog coordinate commands' older names.
+GLAPI void APIENTRY glFogCoordfEXT(GLfloat coord) { glFogCoordf(coord); }
+GLAPI void APIENTRY glFogCoordfvEXT(const GLfloat* coord) { glFogCoordfv(coord); }
+GLAPI void APIENTRY glFogCoorddEXT(GLdouble coord) { glFogCoordd(coord); }
+GLAPI void APIENTRY glFogCoorddvEXT(const GLdouble* coord) { glFogCoorddv(coord); }
+GLAPI void APIENTRY glFogCoordPointerEXT(GLenum type, GLsizei stride, const void* pointer) {
+  glFogCoordPointer(type, stride, pointer);
+}
+
 // Blending (api/gl_blend_api.cpp): EXT_blend_color, EXT_blend_minmax,
 // EXT/INGR_blend_func_separate, EXT/ATI_blend_equation_separate.
 GLAPI void APIENTRY glBlendColorEXT(GLfloat red, GLfloat green, GLfloat blue, GLfloat alpha);
@@ -229,6 +238,9 @@ const Alias kAliases[] = {
     GLFX_ALIAS(glNormalPointerEXT),       GLFX_ALIAS(glColorPointerEXT),
     GLFX_ALIAS(glIndexPointerEXT),        GLFX_ALIAS(glTexCoordPointerEXT),
     GLFX_ALIAS(glEdgeFlagPointerEXT),
+    GLFX_ALIAS(glFogCoordfEXT),           GLFX_ALIAS(glFogCoordfvEXT),
+    GLFX_ALIAS(glFogCoorddEXT),           GLFX_ALIAS(glFogCoorddvEXT),
+    GLFX_ALIAS(glFogCoordPointerEXT),
     GLFX_ALIAS(glMultiTexCoord1sARB),
     GLFX_ALIAS(glMultiTexCoord1svARB),
     GLFX_ALIAS(glMultiTexCoord1iARB),

@@ -39,10 +39,16 @@ void secondaryColor(float r, float g, float b) {
   if (ctx) ctx->current.secondaryColor = glm::vec4(r, g, b, 1.0f);
 }
 
+// Fog: a vertex attribute of Mesa's vbo (it grows the vertex format like
+// glEdgeFlag), and vertex data of a list's node inside its glBegin/glEnd.
 void fogCoord(float f) {
-  if (api::compiledAttribute(&glFogCoordf, f)) return;
   Context* ctx = currentContext();
-  if (ctx) ctx->current.fogCoord = f;
+  if (ctx && ctx->displayLists.compiler &&
+      api::compiledVertexData([&](pipeline::ListCompiler& l) { l.fogCoord(f); }, &glFogCoordf, f))
+    return;
+  if (!ctx) return;
+  if (ctx->insideBeginEnd || ctx->vbo.verticesBuffered) pipeline::fogCoordBecomesVertexData(*ctx);
+  ctx->current.fogCoord = f;
 }
 
 void colorIndex(float i) {

@@ -55,12 +55,13 @@ bool queryHeldState(Context& ctx, GLenum pname, StateValue& out) {
     case GL_FOG_START: out.set({ctx.fog.start}); return true;
     case GL_FOG_END: out.set({ctx.fog.end}); return true;
     case GL_FOG_INDEX: out.set({ctx.fog.index}); return true;
-    case GL_FOG_COLOR: {
+    case GL_FOG_COLOR: {  // clamped, as Mesa reports it for fixed-point buffers
       const glm::vec4& c = ctx.fog.color;
-      out.set({c.r, c.g, c.b, c.a}, Kind::kNormalized);
+      out.set({api::clamp01(c.r), api::clamp01(c.g), api::clamp01(c.b), api::clamp01(c.a)}, Kind::kNormalized);
       return true;
     }
     case GL_FOG_COORD_SRC: out.set({double(ctx.fog.coordSrc)}); return true;
+    case 0x855A: out.set({double(ctx.fog.distanceMode)}); return true;  // GL_FOG_DISTANCE_MODE_NV
     case GL_LINE_WIDTH: out.set({ctx.line.width}); return true;
     case GL_LINE_STIPPLE_PATTERN: out.set({double(ctx.line.stipplePattern)}); return true;
     case GL_LINE_STIPPLE_REPEAT: out.set({double(ctx.line.stippleRepeat)}); return true;

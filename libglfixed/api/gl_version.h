@@ -3,9 +3,9 @@
 // GetProcAddress, so these promise only what works.
 //
 // GL 2.0 needs GLSL, which the library does not have: the version is 1.5,
-// the last one without shaders. Fog, blending, stencil and the pixel
-// rectangles of GL 1.0-1.4 come later (issue 15); blending and the logic op
-// are here (fragment/blend.inc).
+// the last one without shaders. The pixel rectangles of GL 1.0-1.4 come
+// later (issue 15); blending and the logic op (fragment/blend.inc), the
+// stencil test and fog (fragment/fog.inc) are here.
 // The extensions listed are those whose every command and enum works.
 #pragma once
 
@@ -25,13 +25,12 @@ constexpr const char* kGLExtensionsString =
     "GL_ATI_separate_stencil GL_EXT_bgra "
     "GL_EXT_blend_color GL_EXT_blend_equation_separate GL_EXT_blend_func_separate GL_EXT_blend_minmax "
     "GL_EXT_blend_subtract GL_EXT_copy_texture "
-    "GL_EXT_draw_range_elements GL_EXT_multi_draw_arrays GL_EXT_packed_pixels GL_EXT_point_parameters "
-    "GL_EXT_provoking_vertex GL_EXT_rescale_normal GL_EXT_separate_specular_color GL_EXT_shadow_funcs "
-    "GL_EXT_stencil_two_side "
-    "GL_EXT_stencil_wrap GL_EXT_subtexture "
+    "GL_EXT_draw_range_elements GL_EXT_fog_coord GL_EXT_multi_draw_arrays GL_EXT_packed_pixels "
+    "GL_EXT_point_parameters GL_EXT_provoking_vertex GL_EXT_rescale_normal GL_EXT_separate_specular_color "
+    "GL_EXT_shadow_funcs GL_EXT_stencil_two_side GL_EXT_stencil_wrap GL_EXT_subtexture "
     "GL_EXT_texture GL_EXT_texture3D GL_EXT_texture_edge_clamp GL_EXT_texture_env_add "
     "GL_EXT_texture_env_combine GL_EXT_texture_env_dot3 GL_EXT_texture_lod_bias GL_EXT_texture_object "
-    "GL_EXT_vertex_array GL_INGR_blend_func_separate GL_NV_blend_square GL_SGIS_generate_mipmap GL_SGIS_texture_border_clamp GL_SGIS_texture_edge_clamp "
+    "GL_EXT_vertex_array GL_INGR_blend_func_separate GL_NV_blend_square GL_NV_fog_distance GL_SGIS_generate_mipmap GL_SGIS_texture_border_clamp GL_SGIS_texture_edge_clamp "
     "GL_SGIS_texture_lod ";  // a space after the last name, as Mesa's (piglit's glinfo prints it as it is)
 
 // True if a context of version major.minor can be had (the library's own

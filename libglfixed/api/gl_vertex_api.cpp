@@ -33,6 +33,7 @@ void addVertex(int size, float x, float y, float z, float w) {
   b.edgeFlag.push_back(ctx->current.edgeFlag);  // polygon area: the edge flag
   for (uint32_t m = b.texCoordUnits; m != 0; m &= m - 1)  // texture coordinates (issue 14)
     b.texCoord[__builtin_ctz(m)].push_back(ctx->current.texCoord[__builtin_ctz(m)]);
+  if (b.hasFogCoord) b.fogCoord.push_back(ctx->current.fogCoord);  // fog
   pipeline::vertexAdded(*ctx);
 }
 

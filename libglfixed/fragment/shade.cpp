@@ -25,6 +25,7 @@ namespace generic {
 #define GLFIXED_BLOCK_AVX2 0
 #include "fragment/alpha_test.inc"
 #include "fragment/blend.inc"
+#include "fragment/fog.inc"
 #include "fragment/block_shader.inc"
 #undef GLFIXED_BLOCK_AVX2
 }  // namespace generic
@@ -35,6 +36,7 @@ namespace avx2 {
 #define GLFIXED_BLOCK_AVX2 1
 #include "fragment/alpha_test.inc"
 #include "fragment/blend.inc"
+#include "fragment/fog.inc"
 #include "fragment/block_shader.inc"
 #undef GLFIXED_BLOCK_AVX2
 }  // namespace avx2
@@ -57,6 +59,22 @@ AlphaTestState makeAlphaTest(bool enabled, GLenum func, float ref) {
   a.func = func;
   a.ref = raster::colorToUnorm8(ref);
   return a;
+}
+
+// Mesa's STATE_FOG_PARAMS_OPTIMIZED and its clamped fog colour (fog_state.h).
+FogState makeFogState(bool enabled, GLenum mode, float density, float start, float end, const glm::vec4& color) {
+  FogState f;
+  if (!enabled) return f;
+  f.mode = mode == GL_LINEAR ? FogState::Mode::kLinear : (mode == GL_EXP ? FogState::Mode::kExp : FogState::Mode::kExp2);
+  f.scale = end == start ? 1.0f : -1.0f / (end - start);
+  f.offset = end * -f.scale;
+  constexpr double kOneOverLn2 = 1.4426950408889634074, kOneOverSqrtLn2 = 1.201122408786449815;
+  f.density = static_cast<float>(double(density) * (mode == GL_EXP ? kOneOverLn2 : kOneOverSqrtLn2));
+  for (int k = 0; k < 3; ++k) {
+    const float c = color[k];
+    f.color[k] = c > 0.0f ? (c > 1.0f ? 1.0f : c) : 0.0f;  // NaN -> 0
+  }
+  return f;
 }
 
 namespace {
@@ -104,6 +122,7 @@ ShadeTarget makeShadeTarget(const raster::RasterState& state, Framebuffer& fb,
   s.stipple = t.stipple ? t.stipple : (state.stippleEveryPrimitive ? state.polygonStipple : nullptr);
   s.textures = state.textures && state.textures->unitCount > 0 ? state.textures : nullptr;
   s.blend = state.blend;
+  s.fog = t.fog ? state.fog : FogState();  // only where the vertices carried the fog distance
   s.alphaTest = state.alphaTest;
   // The alpha test can discard after the colour: llvmpipe then tests depth late.
   if (s.alphaTest.active()) s.lateDepth = true;

@@ -10,6 +10,7 @@
 
 #include "fragment/alpha_test_state.h"
 #include "fragment/blend_state.h"
+#include "fragment/fog_state.h"
 #include "fragment/stencil_state.h"
 #include "framebuffer/framebuffer.h"
 #include "raster/primitive_setup.h"
@@ -50,6 +51,9 @@ struct ShadeTarget {
   const TextureStage* textures = nullptr;
   // Blending or the logic op (GL 2.1 §4.1.8, §4.1.10), before the colour mask.
   BlendState blend;
+  // Fog (GL 2.1 §3.10), after texturing and the colour sum, before the alpha
+  // test (fragment/fog.inc); the fog distance is varying raster::kFogVarying.
+  FogState fog;
 };
 
 ShadeTarget makeShadeTarget(const raster::RasterState& state, Framebuffer& fb,

@@ -86,6 +86,7 @@ template <typename Each>
 void appendEach(const ArraySources& src, const Context& ctx, size_t count, VertexBatch& batch, Each indexAt) {
   const size_t start = batch.size();
   if (start == 0) batch.setTexCoordUnits(vertex::texCoordInputUnits(ctx));  // texture coordinates (issue 14)
+  if (start == 0) batch.setHasFogCoord(vertex::fogCoordInput(ctx));         // fog
   batch.resizeVertices(start + count);
   const glm::vec4 currentNormal(ctx.current.normal, 0.0f);
   const glm::vec4& currentColor = ctx.current.color;
@@ -105,6 +106,9 @@ void appendEach(const ArraySources& src, const Context& ctx, size_t count, Verte
       batch.texCoord[u][o] = src.texCoord[u] ? src.texCoordView[u].read(i, glm::vec4(0, 0, 0, 1))
                                              : ctx.current.texCoord[u];
     }
+    // Fog: the fog coordinate array, else the current fog coordinate.
+    if (batch.hasFogCoord)
+      batch.fogCoord[o] = src.fogCoord ? src.fogCoordView.read(i, glm::vec4(0)).x : ctx.current.fogCoord;
   }
 }
 

@@ -150,6 +150,7 @@ void ListCompiler::vertex(const glm::vec4& position) {
   v.materialIndex.push_back(0);
   v.edgeFlag.push_back(edgeFlag_);  // polygon area
   for (uint32_t m = v.texCoordUnits; m != 0; m &= m - 1) v.texCoord[__builtin_ctz(m)].push_back(texCoord_[__builtin_ctz(m)]);
+  if (v.hasFogCoord) v.fogCoord.push_back(fogCoord_);
 }
 
 // Polygon area: the edge flag joins the node's vertices without growing its
@@ -178,6 +179,14 @@ void ListCompiler::texCoord(int unit, const glm::vec4& c) {
     node_->vertices.setTexCoordUnits(node_->vertices.texCoordUnits | before | bit);
   }
   texCoord_[unit] = c;
+}
+
+void ListCompiler::fogCoord(float f) {
+  if (!node_->vertices.hasFogCoord) {
+    growFormat();
+    node_->vertices.setHasFogCoord(true);
+  }
+  fogCoord_ = f;
 }
 
 void ListCompiler::material(GLenum face, GLenum pname, const GLfloat* params, int count) {
@@ -221,6 +230,8 @@ void ListCompiler::growFormat(bool feedOpenPrimitive) {
     cont.begin = false;
     next->primitives.push_back(cont);
   }
+  // The fog coordinate stays in the format of the nodes that follow.
+  if (old.vertices.hasFogCoord && !next->vertices.hasFogCoord) next->vertices.setHasFogCoord(true);
   if (insideBeginEnd_ && feedOpenPrimitive) {
     const ListPrimitive open = old.primitives.back();
     old.primitives.pop_back();
@@ -402,6 +413,7 @@ void loopBackVertexNode(const VertexNode& node) {
         const int u = __builtin_ctz(m);
         glMultiTexCoord4fv(GL_TEXTURE0 + u, &v.texCoord[u][i][0]);
       }
+      if (v.hasFogCoord) glFogCoordf(v.fogCoord[i]);
       glVertex4fv(&v.position[i][0]);
     }
     materialsUpTo(p.first + p.count);
@@ -437,6 +449,7 @@ void replayVertexNode(Context& ctx, VertexNode& node) {
     if (v.size() > 0 && node.updatesCurrent) {
       for (uint32_t m = v.texCoordUnits; m != 0; m &= m - 1)
         ctx.current.texCoord[__builtin_ctz(m)] = v.texCoord[__builtin_ctz(m)].back();
+      if (v.hasFogCoord) ctx.current.fogCoord = v.fogCoord.back();
       if (node.hasNormal) ctx.current.normal = v.normal.back();
       if (node.hasEdgeFlag) ctx.current.edgeFlag = v.edgeFlag.back() != 0;
       if (node.hasColor) {

@@ -119,6 +119,8 @@ class ListCompiler {
   // Texture coordinates of unit `unit` (0-based): they join the node's vertex
   // format as a colour does.
   void texCoord(int unit, const glm::vec4& c);
+  // The fog coordinate: joins the node's vertex format the same way.
+  void fogCoord(float f);
   void material(GLenum face, GLenum pname, const GLfloat* params, int count);
   void attributeCall(ListCommand call) { node_->attributeCalls.push_back(std::move(call)); }
   // glCallList between glBegin and glEnd in a list: the node ends and the rest
@@ -153,6 +155,7 @@ class ListCompiler {
   bool edgeFlag_ = true;  // polygon area
   glm::vec3 normal_{0, 0, 1};
   glm::vec4 texCoord_[kBatchTexCoordUnits];
+  float fogCoord_ = 0;
   // The nodes a format growth ended inside the glBegin/glEnd that goes on in
   // node_: if a node of the chain is fed back on replay, they all must be.
   std::vector<std::shared_ptr<VertexNode>> grownChain_;

@@ -110,6 +110,9 @@ primitive::PrimitiveState primitiveState(const Context& ctx, GLenum mode, bool s
     }
   r.frontFace = ctx.polygon.frontFace;
   r.varyingCount = separateSpecular ? 8 : 4;
+  // Fog (GL 2.1 §3.10; fragment/fog.inc).
+  r.fog = fragment::makeFogState(ctx.fog.enabled, ctx.fog.mode, ctx.fog.density, ctx.fog.start, ctx.fog.end,
+                                 ctx.fog.color);
   r.alphaTest =
       fragment::makeAlphaTest(ctx.colorBuffer.alphaTest, ctx.colorBuffer.alphaFunc, ctx.colorBuffer.alphaRef);
   r.scissorX0 = std::max(0, ctx.viewport.x);
@@ -209,6 +212,7 @@ raster::RasterState pixelRectRasterState(const Context& ctx) {
   r.texCoordUnits = 0;
   r.varyingCount = 4;
   r.pointSprite = false;
+  r.fog = fragment::FogState();  // (Mesa fogs bitmaps too: not done)
   return r;
 }
 

@@ -132,6 +132,7 @@ void drawPending(Context& ctx) {
 void beginPrimitive(Context& ctx, GLenum mode) {
   ctx.batch.reset(mode, ctx.lighting.material);
   ctx.batch.setTexCoordUnits(vertex::texCoordInputUnits(ctx));  // texture coordinates (issue 14)
+  ctx.batch.setHasFogCoord(vertex::fogCoordInput(ctx));         // fog
   ++ctx.vboStore.primCount;
   ctx.vboStore.openLoopWrapped = false;
 }
@@ -220,6 +221,10 @@ void normalBecomesVertexData(Context& ctx) {
 void edgeFlagBecomesVertexData(Context& ctx) {
   if (ctx.vbo.edgeFlagIsVertexData) return;
   growVertexFormat(ctx, true, [](Context::VboFormat& f) { f.edgeFlagIsVertexData = true; });
+}
+void fogCoordBecomesVertexData(Context& ctx) {
+  if (ctx.vbo.fogCoordIsVertexData) return;
+  growVertexFormat(ctx, true, [](Context::VboFormat& f) { f.fogCoordIsVertexData = true; });
 }
 void positionGrows(Context& ctx, int size) {
   if (ctx.vbo.positionSize >= size) return;

@@ -39,6 +39,8 @@ void colorBecomesVertexData(Context& ctx, int size);
 // The same for the normal (glNormal): it grows the vbo's vertex format too.
 void normalBecomesVertexData(Context& ctx);
 void edgeFlagBecomesVertexData(Context& ctx);
+// And for glFogCoord (Mesa's VBO_ATTRIB_FOG).
+void fogCoordBecomesVertexData(Context& ctx);
 // And for the position: a glVertex3 after glVertex2 calls grows it.
 void positionGrows(Context& ctx, int size);
 // And for glMaterial: `attributes` are the material components the call sets

@@ -44,6 +44,15 @@ struct VertexBatch {
     for (int u = 0; u < kBatchTexCoordUnits; ++u)
       texCoord[u].resize((units >> u & 1u) ? size() : 0, glm::vec4(0, 0, 0, 1));
   }
+  // Fog (GL 2.1 §3.10): each vertex's fog coordinate, carried only while
+  // the draw reads it (fog on, GL_FOG_COORD its source); else empty and the
+  // vertex stage uses the current one.
+  bool hasFogCoord = false;
+  std::vector<float> fogCoord;
+  void setHasFogCoord(bool on) {
+    hasFogCoord = on;
+    fogCoord.resize(on ? size() : 0, 0.0f);
+  }
   size_t size() const { return position.size(); }
   void reset(GLenum primitiveMode, const MaterialPair& current) {
     mode = primitiveMode;
@@ -60,11 +69,13 @@ struct VertexBatch {
     materialIndex.resize(n);
     edgeFlag.resize(n, 1);
     for (uint32_t m = texCoordUnits; m != 0; m &= m - 1) texCoord[__builtin_ctz(m)].resize(n, glm::vec4(0, 0, 0, 1));
+    if (hasFogCoord) fogCoord.resize(n, 0.0f);
   }
   // Appends vertices [first, last) of `from` (their material indexes as they are).
   void appendVertices(const VertexBatch& from, size_t first, size_t last) {
     // Texture coordinates: an empty batch takes the units of the one it copies.
     if (position.empty() && texCoordUnits != from.texCoordUnits) setTexCoordUnits(from.texCoordUnits);
+    if (position.empty() && hasFogCoord != from.hasFogCoord) setHasFogCoord(from.hasFogCoord);
     position.insert(position.end(), from.position.begin() + first, from.position.begin() + last);
     normal.insert(normal.end(), from.normal.begin() + first, from.normal.begin() + last);
     color.insert(color.end(), from.color.begin() + first, from.color.begin() + last);
@@ -79,6 +90,12 @@ struct VertexBatch {
       else
         t.resize(position.size(), glm::vec4(0, 0, 0, 1));
     }
+    if (hasFogCoord) {
+      if (from.hasFogCoord)
+        fogCoord.insert(fogCoord.end(), from.fogCoord.begin() + first, from.fogCoord.begin() + last);
+      else
+        fogCoord.resize(position.size(), 0.0f);
+    }
   }
   void eraseFirstVertices(size_t n) { eraseVertices(0, n); }
   // Erases vertices [first, last) (their material indexes as they are).
@@ -91,6 +108,7 @@ struct VertexBatch {
     for (uint32_t m = texCoordUnits; m != 0; m &= m - 1)
       texCoord[__builtin_ctz(m)].erase(texCoord[__builtin_ctz(m)].begin() + first,
                                        texCoord[__builtin_ctz(m)].begin() + last);
+    if (hasFogCoord) fogCoord.erase(fogCoord.begin() + first, fogCoord.begin() + last);
   }
 };
 
@@ -110,6 +128,10 @@ struct ShadedVertices {
   // vertex for the units in texCoordUnits, after texgen and the texture matrix.
   uint32_t texCoordUnits = 0;
   std::array<std::vector<glm::vec4>, kBatchTexCoordUnits> texCoord;
+  // Fog (GL 2.1 §3.10): each vertex's fog distance (the shader's
+  // gl_FogFragCoord), filled only while hasFog.
+  std::vector<float> fog;
+  bool hasFog = false;
   size_t size() const { return clip.size(); }
 };
 

@@ -77,13 +77,17 @@ struct BatchContext {
 };
 
 // Texture coordinates (issue 14): ClipVertex attributes -> window varyings
-// for the units in b.raster.texCoordUnits.
+// for the units in b.raster.texCoordUnits, and the fog distance.
+inline bool carriesMoreThanColours(const BatchContext& b) {
+  return b.raster.texCoordUnits != 0 || b.raster.fog.active();
+}
 inline void copyTexCoords(const BatchContext& b, const ClipVertex& v, raster::WindowVertex& w) {
   for (uint32_t m = b.raster.texCoordUnits; m != 0; m &= m - 1) {
     const int u = __builtin_ctz(m);
     std::memcpy(w.varying + raster::kTexCoordVarying + 4 * u, v.attr + kClipTexCoordAttribs + 4 * u,
                 4 * sizeof(float));
   }
+  if (b.raster.fog.active()) w.varying[raster::kFogVarying] = v.attr[kClipFogAttrib];
 }
 
 // A triangle leaving the clipper: the draw module's cull stage (pipeline

@@ -56,7 +56,9 @@ constexpr int kClipColorAttribs = 16;
 // kClipTexCoordAttribs + 4 u, interpolated like the colours.
 constexpr int kClipTexCoordAttribs = kClipColorAttribs;
 constexpr int kClipTexCoordUnits = 8;
-constexpr int kMaxClipAttribs = kClipTexCoordAttribs + 4 * kClipTexCoordUnits;
+// Fog: the fog distance, last.
+constexpr int kClipFogAttrib = kClipTexCoordAttribs + 4 * kClipTexCoordUnits;
+constexpr int kMaxClipAttribs = kClipFogAttrib + 1;
 
 struct ClipVertex {
   glm::vec4 clip{0};     // clip coordinates

@@ -46,7 +46,7 @@ void setupTriangle(const BatchContext& b, const ClipVertex& v0, const ClipVertex
 
   const int base = (b.twoSided && !front && forcedFace == 0) ? kBackAttribs : kFrontAttribs;
   for (int i = 0; i < 3; ++i) std::memcpy(w[i].varying, v[i]->attr + base, sizeof(float) * b.varyingCount);
-  if (b.raster.texCoordUnits != 0)  // texture coordinates (issue 14)
+  if (carriesMoreThanColours(b))  // texture coordinates (issue 14), fog
     for (int i = 0; i < 3; ++i) copyTexCoords(b, *v[i], w[i]);
   // Flat colours: the provoking vertex's (GL_FLAT), or Mesa's constant.
   const float* flat = nullptr;
@@ -126,6 +126,7 @@ void loadVertices(const ShadedVertices& in, uint32_t n, const ViewportTransform&
       const int u = __builtin_ctz(m);
       std::memcpy(v.attr + kClipTexCoordAttribs + 4 * u, &in.texCoord[u][i][0], 4 * sizeof(float));
     }
+    if (in.hasFog) v.attr[kClipFogAttrib] = in.fog[i];  // fog: last
   }
 }
 
@@ -255,6 +256,12 @@ void drawPrimitives(const PrimitiveState& state, const ShadedVertices& vertices,
     const int units = 32 - __builtin_clz(vertices.texCoordUnits);
     b.clipAttribCount = kClipTexCoordAttribs + 4 * units;
     b.windowVaryingCount = raster::kTexCoordVarying + 4 * units;
+  }
+  // Fog: the fog distance, after every texture unit's slots.
+  if (!vertices.hasFog) b.raster.fog = fragment::FogState();
+  if (b.raster.fog.active()) {
+    b.clipAttribCount = kMaxClipAttribs;
+    b.windowVaryingCount = raster::kMaxVaryings;
   }
 
   // Polygon area: when polygon state makes Mesa run the draw module's

@@ -115,7 +115,7 @@ void stippleLine(const BatchContext& b, const raster::WindowVertex& v0, const ra
   auto piece = [&](float t0, float t1) {
     raster::WindowVertex p0, p1;
     // Texture coordinates (issue 14): interpolated with the colours.
-    const int varyings = b.raster.texCoordUnits != 0 ? b.windowVaryingCount : b.varyingCount;
+    const int varyings = carriesMoreThanColours(b) ? b.windowVaryingCount : b.varyingCount;
     if (t0 > 0.0) screenInterpolate(v0, v1, t0, varyings, p0);
     if (t1 < 1.0) screenInterpolate(v0, v1, t1, varyings, p1);
     drawPiece(t0 > 0.0 ? p0 : v0, t1 < 1.0 ? p1 : v1);
@@ -148,7 +148,7 @@ void emitLine(const BatchContext& b, const ClipVertex& v0, const ClipVertex& v1,
     w[i].oneOverW = v[i]->window[3];
     // Lines are always front-facing (lp_setup_line.c): front colours.
     std::memcpy(w[i].varying, v[i]->attr + kFrontAttribs, sizeof(float) * b.varyingCount);
-    if (b.raster.texCoordUnits != 0) copyTexCoords(b, *v[i], w[i]);  // texture coordinates (issue 14)
+    if (carriesMoreThanColours(b)) copyTexCoords(b, *v[i], w[i]);  // texture coordinates (issue 14), fog
   }
   // Flat colours: the provoking vertex's (GL_FLAT), or Mesa's constant.
   const float* flat = nullptr;

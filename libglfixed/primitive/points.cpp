@@ -28,7 +28,7 @@ void emitPoint(const BatchContext& b, const ClipVertex& v) {
   w.oneOverW = v.window[3];
   // A point is always front-facing (§3.4: two-sided lighting gives points the front colours).
   std::memcpy(w.varying, v.attr + kFrontAttribs, sizeof(float) * b.varyingCount);
-  if (b.raster.texCoordUnits != 0) copyTexCoords(b, v, w);  // texture coordinates (issue 14)
+  if (carriesMoreThanColours(b)) copyTexCoords(b, v, w);  // texture coordinates (issue 14)
   const float* flat = nullptr;
   float flatValues[raster::kMaxVaryings];
   if (b.raster.flatGroups != 0) {

@@ -30,6 +30,8 @@ struct PrimitiveSetup {
   // RasterState::texCoordUnits: bit u, varying[kTexCoordVarying + 4u ..]
   // holds unit u's s, t, r, q planes (always interpolated, with `w` set).
   uint32_t texCoordUnits = 0;
+  // Fog: varying[kFogVarying] holds the fog distance's plane (with `w`).
+  bool fog = false;
   int x0 = 0, x1 = -1, y0 = 0, y1 = -1;  // inclusive pixel bounds, llvmpipe (y-down) rows
   // Smooth points (raster/point.cpp): one of the two triangles of the draw
   // module's aapoint quad, whose fragment shader Mesa rewrites
@@ -74,11 +76,13 @@ namespace glfixed::raster {
 template <typename MakePlane, typename MakeW>
 inline void setTexCoordPlanes(const RasterState& state, PrimitiveSetup& t, MakeW&& makeW, MakePlane&& plane) {
   t.texCoordUnits = state.texCoordUnits;
-  if (!t.texCoordUnits) return;
+  t.fog = state.fog.active();  // and the fog distance, the same way
+  if (!t.texCoordUnits && !t.fog) return;
   t.w = makeW();
   for (int u = 0; u < kMaxTexCoordUnits; ++u)
     if (t.texCoordUnits & (1u << u))
       for (int k = kTexCoordVarying + 4 * u; k < kTexCoordVarying + 4 * u + 4; ++k) t.varying[k] = plane(k);
+  if (t.fog) t.varying[kFogVarying] = plane(kFogVarying);
 }
 
 // Bounding box, edges and planes of a triangle with positive snapped area;

@@ -6,6 +6,7 @@
 
 #include "fragment/alpha_test_state.h"
 #include "fragment/blend_state.h"
+#include "fragment/fog_state.h"
 #include "fragment/stencil_state.h"
 #include "framebuffer/framebuffer.h"
 #include "raster/edge.h"
@@ -21,7 +22,9 @@ namespace glfixed::raster {
 // kTexCoordVarying + 4 u.
 constexpr int kTexCoordVarying = 8;
 constexpr int kMaxTexCoordUnits = 8;
-constexpr int kMaxVaryings = kTexCoordVarying + 4 * kMaxTexCoordUnits;
+// Fog (GL 2.1 §3.10): the vertex program's fog distance, last.
+constexpr int kFogVarying = kTexCoordVarying + 4 * kMaxTexCoordUnits;
+constexpr int kMaxVaryings = kFogVarying + 1;
 
 // A vertex in window coordinates AS LLVMPIPE SEES THEM: Mesa renders an OSMesa
 // buffer upside down (gallium's y = 0 is the top row) and flips it when it
@@ -101,6 +104,10 @@ struct RasterState {
   GLenum spriteCoordOrigin = GL_UPPER_LEFT;
   // Blending or the logic op before the colour write (fragment/blend.inc).
   fragment::BlendState blend;
+  // Fog (fragment/fog.inc): active when GL_FOG is on; then the vertices
+  // carry the fog distance in varying kFogVarying, interpolated
+  // perspective-correct like the texture coordinates, never flat.
+  fragment::FogState fog;
 };
 
 // Snaps the three vertices to llvmpipe's 1/256 grid (fixed_point.h) and

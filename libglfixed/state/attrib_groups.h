@@ -28,6 +28,8 @@ struct FogAttrib {
   glm::vec4 color{0, 0, 0, 0};
   float density = 1, start = 0, end = 1, index = 0;
   GLenum coordSrc = GL_FRAGMENT_DEPTH;
+  // NV_fog_distance: how the fog distance of GL_FRAGMENT_DEPTH is measured.
+  GLenum distanceMode = 0x855C;  // GL_EYE_PLANE_ABSOLUTE_NV
 };
 
 // GL_STENCIL_BUFFER_BIT (table 6.20 and the clear value of table 6.21).

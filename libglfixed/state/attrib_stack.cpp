@@ -46,6 +46,17 @@ void restoreLighting(Context& c, const AttribNode& n) {
   c.markDirty(kDirtyLighting);  // light positions restore as stored, in eye space
 }
 
+// GL_FOG_BIT: Mesa's glPopAttrib restores the fog through glFog calls for
+// the enable, colour, density, start, end, index and mode only: the fog
+// coordinate source and NV_fog_distance's mode keep their current values
+// (probed: FogTest.FogBitAndEnableBitPushAndPop).
+void restoreFog(Context& c, const AttribNode& n) {
+  const GLenum coordSrc = c.fog.coordSrc, distanceMode = c.fog.distanceMode;
+  c.fog = n.fog;
+  c.fog.coordSrc = coordSrc;
+  c.fog.distanceMode = distanceMode;
+}
+
 // Textures: the parameters of the bound texture objects (GL_TEXTURE_BIT),
 // restored into the objects of the names bound at the push, where they
 // still exist, after the bindings themselves.
@@ -81,7 +92,7 @@ const Group kGroups[] = {
     copied<&Context::depth, &AttribNode::depth>(GL_DEPTH_BUFFER_BIT),
     Group{GL_ENABLE_BIT, saveEnable, restoreEnable},
     copied<&Context::eval, &AttribNode::eval>(GL_EVAL_BIT),
-    copied<&Context::fog, &AttribNode::fog>(GL_FOG_BIT),
+    Group{GL_FOG_BIT, saveCopy<&Context::fog, &AttribNode::fog>, restoreFog},
     copied<&Context::hint, &AttribNode::hint>(GL_HINT_BIT),
     Group{GL_LIGHTING_BIT, saveCopy<&Context::lighting, &AttribNode::lighting>, restoreLighting},
     copied<&Context::line, &AttribNode::line>(GL_LINE_BIT),

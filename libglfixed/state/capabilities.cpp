@@ -107,8 +107,9 @@ constexpr Capability kTable[] = {
           GL_COLOR_BUFFER_BIT, 0, kSettable),
     entry(GL_INDEX_LOGIC_OP, field<&Context::colorBuffer, &ColorBufferAttrib::indexLogicOp>,
           GL_COLOR_BUFFER_BIT, 0, kSettable),
+    // Fog (fragment/fog.inc).
+    entry(GL_FOG, field<&Context::fog, &FogAttrib::enabled>, GL_FOG_BIT, 0, kSettable),
     // State without its stage yet.
-    entry(GL_FOG, field<&Context::fog, &FogAttrib::enabled>, GL_FOG_BIT, 0, kHeld),
     entry(GL_COLOR_SUM, field<&Context::fog, &FogAttrib::colorSum>, GL_FOG_BIT, 0, kHeld),
     // Lines (primitive/lines.cpp) and points (primitive/points.cpp): drawn.
     entry(GL_LINE_SMOOTH, field<&Context::line, &LineAttrib::smooth>, GL_LINE_BIT, 0, kSettable),

@@ -40,6 +40,11 @@ const vertex::VertexState& Context::validate() {
     vertexState_.pointSizeClamp[1] = point.sizeMin >= 1.0f ? point.sizeMin : 1.0f;
     vertexState_.pointSizeClamp[2] = point.sizeMax <= 255.0f ? point.sizeMax : 255.0f;
   }
+  // Fog: the vertex program's fog coordinate (vertex_stage.h).
+  vertexState_.fog.enabled = fog.enabled;
+  vertexState_.fog.fromFogCoord = fog.coordSrc == GL_FOG_COORD;
+  vertexState_.fog.distanceMode = fog.distanceMode;
+  vertexState_.fog.currentCoord = current.fogCoord;
   dirty_ = 0;
   return vertexState_;
 }

@@ -124,13 +124,15 @@ class Context {
     int colorSize = 0;     // 0: a constant; 3 or 4: glColor3 or glColor4 made it vertex data
     bool normalIsVertexData = false;  // the same for glNormal
     bool edgeFlagIsVertexData = false;  // and for glEdgeFlag (one float in Mesa's vertex)
+    bool fogCoordIsVertexData = false;  // and for glFogCoord (one float)
     uint32_t materialAttributes = 0;  // glMaterial components made vertex data (materialfv)
     int materialFloats = 0;
     bool colorIsVertexData() const { return colorSize != 0; }
     // Mesa's vertex_size.
     uint32_t vertexFloats() const {
       return static_cast<uint32_t>(positionSize + colorSize + (normalIsVertexData ? 3 : 0) +
-                                   (edgeFlagIsVertexData ? 1 : 0) + materialFloats);
+                                   (edgeFlagIsVertexData ? 1 : 0) + (fogCoordIsVertexData ? 1 : 0) +
+                                   materialFloats);
     }
   } vbo;
   // Where Mesa's vertex buffer stands (pipeline/vbo_store.h); kept across flushes.

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "state/context.h"
 #include "vertex/lighting_math.h"
 
 namespace glfixed::vertex {
@@ -19,7 +20,58 @@ inline glm::vec4 transformPosition(const glm::mat4& m, const glm::vec4& p) {
   return m[3] * p.w + r;
 }
 
+// Lighting has computed the whole eye position (a positional light or a
+// local viewer: lighting.cpp); the program's later uses reuse it.
+bool lightingMadeEyePosition(const VertexState& state) {
+  if (!state.lighting || !state.lightingConstants) return false;
+  const LightingConstants& k = *state.lightingConstants;
+  bool eyePosition = k.localViewer;
+  for (int l = 0; l < k.lightCount; ++l) eyePosition |= k.lights[l].positional;
+  return eyePosition;
+}
+
+// The eye z as the program has it: lighting's eye position summed column by
+// column, or a DP4 with the modelview's third row (NIR sums it from w down).
+inline float eyeZ(const glm::mat4& m, const glm::vec4& p, bool eyePosition) {
+  return eyePosition ? ((p.x * m[0][2] + p.y * m[1][2]) + p.z * m[2][2]) + p.w * m[3][2]
+                     : ((p.w * m[3][2] + p.z * m[2][2]) + p.y * m[1][2]) + p.x * m[0][2];
+}
+
+// Fog (build_fog, measured with ST_DEBUG=nir): GL_FOG_COORD gives
+// |coordinate|; GL_FRAGMENT_DEPTH gives |z_eye| (GL_EYE_PLANE_ABSOLUTE_NV,
+// the default), z_eye (GL_EYE_PLANE, signed) or the length of the eye
+// position (GL_EYE_RADIAL_NV: the eye position column by column, then
+// sqrt((z z + y y) + x x), unfused, an exact square root).
+void computeFog(const VertexState& state, const VertexBatch& batch, ShadedVertices& out) {
+  const size_t n = batch.size();
+  const FogVertexState& fog = state.fog;
+  out.fog.resize(n);
+  if (fog.fromFogCoord) {
+    const bool perVertex = batch.hasFogCoord && batch.fogCoord.size() == n;
+    for (size_t i = 0; i < n; ++i) out.fog[i] = std::fabs(perVertex ? batch.fogCoord[i] : fog.currentCoord);
+    return;
+  }
+  const glm::mat4& m = state.eyeFromObject;
+  if (fog.distanceMode == 0x855B) {  // GL_EYE_RADIAL_NV
+    for (size_t i = 0; i < n; ++i) {
+      const glm::vec4& p = batch.position[i];
+      const glm::vec3 e =
+          ((glm::vec3(m[0]) * p.x + glm::vec3(m[1]) * p.y) + glm::vec3(m[2]) * p.z) + glm::vec3(m[3]) * p.w;
+      out.fog[i] = std::sqrt((e.z * e.z + e.y * e.y) + e.x * e.x);
+    }
+    return;
+  }
+  const bool eyePosition = lightingMadeEyePosition(state);
+  const bool absolute = fog.distanceMode != GL_EYE_PLANE;
+  for (size_t i = 0; i < n; ++i) {
+    const float z = eyeZ(m, batch.position[i], eyePosition);
+    out.fog[i] = absolute ? std::fabs(z) : z;
+  }
+}
+
 }  // namespace
+
+bool fogCoordInput(const Context& ctx) { return ctx.fog.enabled && ctx.fog.coordSrc == GL_FOG_COORD; }
 
 // ffvertex_prog.c, build_atten_pointsize, as llvmpipe runs it: the eye z is a
 // DP4 with the modelview's third row (NIR sums it from w down, unfused), the
@@ -29,17 +81,9 @@ inline glm::vec4 transformPosition(const glm::mat4& m, const glm::vec4& p) {
 // second one (measured: a NaN attenuation draws a size-min point).
 float attenuatedPointSize(const VertexState& state, const glm::vec4& p) {
   const glm::mat4& m = state.eyeFromObject;
-  // When lighting has computed the whole eye position (a positional light or
-  // a local viewer: lighting.cpp), the program reuses its z, summed column
-  // by column.
-  bool eyePosition = false;
-  if (state.lighting && state.lightingConstants) {
-    const LightingConstants& k = *state.lightingConstants;
-    eyePosition = k.localViewer;
-    for (int l = 0; l < k.lightCount; ++l) eyePosition |= k.lights[l].positional;
-  }
-  const float zEye = eyePosition ? ((p.x * m[0][2] + p.y * m[1][2]) + p.z * m[2][2]) + p.w * m[3][2]
-                                 : ((p.w * m[3][2] + p.z * m[2][2]) + p.y * m[1][2]) + p.x * m[0][2];
+  // When lighting has computed the whole eye position, the program reuses
+  // its z, summed column by column.
+  const float zEye = eyeZ(m, p, lightingMadeEyePosition(state));
   const float d = std::fabs(zEye);
   const glm::vec3& a = state.pointAttenuation;
   float factor = d * a.z + a.y;
@@ -65,6 +109,8 @@ void shadeBatch(const VertexState& state, const VertexBatch& batch, ShadedVertic
   // Texture coordinates (issue 14): only for the units the shader outputs.
   out.texCoordUnits = 0;
   if (state.texCoord.units != 0) computeTexCoords(state.texCoord, state.eyeFromObject, batch, out);
+  out.hasFog = state.fog.enabled;  // fog: each vertex's fog distance
+  if (out.hasFog) computeFog(state, batch, out);
   if (state.lighting) {
     lightBatch(state, batch, out);
     return;

@@ -8,7 +8,25 @@
 #include "vertex/light_constants.h"
 #include "vertex/texcoord.h"
 
+namespace glfixed {
+class Context;
+}
+
 namespace glfixed::vertex {
+
+// Fog (GL 2.1 §3.10): what Mesa's fixed-function vertex program computes as
+// the fog coordinate it hands the fragment shader (ffvertex_prog.c,
+// build_fog), when GL_FOG is on.
+struct FogVertexState {
+  bool enabled = false;
+  bool fromFogCoord = false;  // GL_FOG_COORD_SRC = GL_FOG_COORD: |coordinate|
+  GLenum distanceMode = 0x855C;  // else NV_fog_distance's mode (GL_EYE_PLANE_ABSOLUTE_NV)
+  float currentCoord = 0;        // for a batch without per-vertex fog coordinates
+};
+
+// Whether a batch must carry each vertex's fog coordinate (fog on, with
+// GL_FOG_COORD as the source).
+bool fogCoordInput(const Context& ctx);
 
 struct VertexState {
   glm::mat4 eyeFromObject{1};   // modelview
@@ -28,6 +46,7 @@ struct VertexState {
   // Texture coordinates (issue 14, vertex/texcoord.h): the units the shader
   // outputs and how it computes them; texCoord.units == 0: none.
   TexCoordState texCoord;
+  FogVertexState fog;
 };
 
 // The attenuated size of one vertex (see pointAttenuated).

@@ -248,6 +248,64 @@ std::unique_ptr<texture::TextureObject> temporaryTexture() {
   return object;
 }
 
+// blit_copy_pixels (st_cb_drawpixels.c): without zoom, pixel transfer or
+// a fragment operation that reads or changes what is written, Mesa copies
+// with a blit when the rectangles do not overlap in the same buffer. A blit
+// writes every channel: the colour write mask is not applied (measured:
+// scene pixel_copy). The rectangles are cut to the read buffer, then the
+// destination to the draw buffer and the scissor box. True when done so.
+bool copyAsBlit(Context& ctx, int srcX, int srcY, int width, int height, long long dstX, long long dstY) {
+  const PixelModeAttrib& pm = ctx.pixelMode;
+  const ColorBufferAttrib& cb = ctx.colorBuffer;
+  const DepthBufferAttrib& d = ctx.depth;
+  const StencilAttrib::Face& sf = ctx.stencil.face[0];
+  Framebuffer& fb = ctx.framebuffer;
+  if (pm.zoomX != 1.0f || pm.zoomY != 1.0f || pm.scale != glm::vec4(1) || pm.bias != glm::vec4(0) ||
+      pm.mapColor || cb.blend || cb.alphaTest || (cb.colorLogicOp && cb.logicOpMode != GL_COPY) ||
+      (d.test && (d.func != GL_ALWAYS || d.writeMask)) || ctx.fog.enabled ||
+      (ctx.stencil.test && (sf.fail != GL_KEEP || sf.depthFail != GL_KEEP || sf.depthPass != GL_KEEP)) ||
+      fb.drawsIntoBoth(cb.drawBuffer))
+    return false;
+  const ColorBuffer& read = fb.read;
+  // _mesa_clip_readpixels, then _mesa_clip_drawpixels of the rest.
+  long long sx0 = srcX, sy0 = srcY, sx1 = static_cast<long long>(srcX) + width,
+            sy1 = static_cast<long long>(srcY) + height;
+  long long dx0 = dstX, dy0 = dstY;
+  auto cutLow = [](long long& a0, long long& b0, long long lo) {
+    if (a0 < lo) {
+      b0 += lo - a0;
+      a0 = lo;
+    }
+  };
+  cutLow(sx0, dx0, 0);
+  cutLow(sy0, dy0, 0);
+  sx1 = std::min<long long>(sx1, read.width);
+  sy1 = std::min<long long>(sy1, read.height);
+  if (sx0 >= sx1 || sy0 >= sy1) return true;
+  long long bx0 = 0, by0 = 0, bx1 = fb.width(), by1 = fb.height();
+  if (ctx.scissor.test) {
+    const ScissorAttrib& sc = ctx.scissor;
+    bx0 = std::max<long long>(bx0, sc.x);
+    by0 = std::max<long long>(by0, sc.y);
+    bx1 = std::min<long long>(bx1, static_cast<long long>(sc.x) + sc.width);
+    by1 = std::min<long long>(by1, static_cast<long long>(sc.y) + sc.height);
+  }
+  cutLow(dx0, sx0, bx0);
+  cutLow(dy0, sy0, by0);
+  const long long w = std::min(sx1 - sx0, bx1 - dx0), h = std::min(sy1 - sy0, by1 - dy0);
+  if (w <= 0 || h <= 0) return true;
+  // The same buffer and overlapping rectangles: the textured quad instead.
+  if (read.pixels == fb.color.pixels && sx0 < dx0 + w && dx0 < sx0 + w && sy0 < dy0 + h && dy0 < sy0 + h)
+    return false;
+  for (long long j = 0; j < h; ++j)
+    for (long long i = 0; i < w; ++i) {
+      uint8_t rgba[4];
+      read.read(static_cast<int>(sx0 + i), static_cast<int>(sy0 + j), rgba);
+      fb.color.write(static_cast<int>(dx0 + i), static_cast<int>(dy0 + j), rgba);
+    }
+  return true;
+}
+
 }  // namespace
 
 void drawColorPixels(Context& ctx, const PixelImage& image) {
@@ -313,6 +371,7 @@ void copyColorPixels(Context& ctx, int srcX, int srcY, int width, int height) {
   const long long rx1 = std::min<long long>(read.width, static_cast<long long>(srcX) + width);
   const long long ry1 = std::min<long long>(read.height, static_cast<long long>(srcY) + height);
   if (rx0 >= rx1 || ry0 >= ry1) return;
+  if (copyAsBlit(ctx, srcX, srcY, width, height, x, y)) return;
   width = std::min(width, texture::kMaxTextureSize);
   height = std::min(height, texture::kMaxTextureSize);
   const PixelModeAttrib& pm = ctx.pixelMode;

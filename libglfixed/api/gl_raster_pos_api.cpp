@@ -347,6 +347,9 @@ GLAPI void APIENTRY glCopyPixels(GLint x, GLint y, GLsizei width, GLsizei height
   if (type != GL_COLOR && type != GL_DEPTH && type != GL_STENCIL) return ctx->recordError(GL_INVALID_ENUM);
   if (type == GL_STENCIL || (type == GL_DEPTH && ctx->framebuffer.depth.bits() == 0))
     return ctx->recordError(GL_INVALID_OPERATION);
+  // No read buffer (glReadBuffer(GL_NONE)): Mesa's _mesa_source_buffer_exists.
+  if (type == GL_COLOR && ctx->framebuffer.bound() && !ctx->framebuffer.read.pixels)
+    return ctx->recordError(GL_INVALID_OPERATION);
   if (!ctx->rasterPos.valid) return;
   if (ctx->renderMode.mode == GL_RENDER) {
     if (width == 0 || height == 0) return;

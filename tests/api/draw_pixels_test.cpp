@@ -247,5 +247,16 @@ TEST_F(DrawPixelsTest, CopyWithoutFragmentOperationsIgnoresTheColourMask) {
   EXPECT_EQ(At(p, 8, 9), (std::array<int, 4>{0, 20, 30, 40}));
 }
 
+TEST_F(DrawPixelsTest, CopyWithoutAReadBufferIsInvalidOperation) {
+  PixelProjection();
+  ClearBlack();
+  glReadBuffer(GL_NONE);
+  ASSERT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  glRasterPos2i(5, 5);
+  glCopyPixels(0, 0, 2, 2, GL_COLOR);
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_INVALID_OPERATION));
+  glReadBuffer(GL_FRONT);
+}
+
 }  // namespace
 }  // namespace glfx_test

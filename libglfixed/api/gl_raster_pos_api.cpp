@@ -267,6 +267,32 @@ void bitmapUnpacked(GLsizei width, GLsizei height, GLfloat xorig, GLfloat yorig,
   ctx->rasterPos.position.y += ymove;
 }
 
+// glDrawPixels with its image read: `bytes` is the client memory (or the
+// display list's copy of its first `extent` bytes), laid out as `layout`.
+void drawPixelsUnpacked(GLsizei width, GLsizei height, GLenum format, GLenum type,
+                        texture::ClientLayout layout, const uint8_t* bytes, size_t extent) {
+  if (api::compiled(&drawPixelsUnpacked, width, height, format, type, layout, api::copied(bytes, extent),
+                    extent))
+    return;
+  Context* ctx = api::contextFlushed();
+  if (!ctx) return;
+  if (width < 0 || height < 0) return ctx->recordError(GL_INVALID_VALUE);
+  if (GLenum e = drawPixelsTypeError(*ctx, format, type)) return ctx->recordError(e);
+  if (!ctx->rasterPos.valid) return;
+  if (ctx->renderMode.mode != GL_RENDER) return pixelsInFeedbackOrSelect(*ctx, GL_DRAW_PIXEL_TOKEN);
+  if (width == 0 || height == 0) return;
+  if (format == GL_DEPTH_COMPONENT || format == GL_STENCIL_INDEX || format == GL_COLOR_INDEX)
+    return ctx->recordError(GL_INVALID_OPERATION);  // not implemented yet
+  pipeline::PixelImage image;
+  image.width = width;
+  image.height = height;
+  image.format = format;
+  image.type = type;
+  image.layout = layout;
+  image.pixels = bytes;
+  pipeline::drawColorPixels(*ctx, image);
+}
+
 }  // namespace
 
 extern "C" {
@@ -288,18 +314,29 @@ GLAPI void APIENTRY glBitmap(GLsizei width, GLsizei height, GLfloat xorig, GLflo
 
 GLAPI void APIENTRY glDrawPixels(GLsizei width, GLsizei height, GLenum format, GLenum type,
                                  const void* pixels) {
-  // Compiled without the pixels, for the same reason as glBitmap.
-  if (api::compiled(&glDrawPixels, width, height, format, type, static_cast<const void*>(nullptr))) return;
-  Context* ctx = api::contextFlushed();
+  Context* ctx = api::context();
   if (!ctx) return;
-  if (width < 0 || height < 0) return ctx->recordError(GL_INVALID_VALUE);
-  if (GLenum e = drawPixelsTypeError(*ctx, format, type)) return ctx->recordError(e);
-  if (!ctx->rasterPos.valid) return;
-  if (ctx->renderMode.mode == GL_RENDER) {
-    if (width > 0 && height > 0) ctx->recordError(GL_INVALID_OPERATION);  // not implemented yet
-    return;
+  // The pixels are read now, while compiling too (Mesa's save_DrawPixels
+  // unpacks the image at compile time, §5.4), and replayed from the copy.
+  const bool compiling = api::listCompiler(ctx) && !api::listCompiler(ctx)->insideBeginEnd();
+  if (!ctx->insideBeginEnd && width > 0 && height > 0 &&
+      texture::checkFormatAndType(format, type) == GL_NO_ERROR && type != GL_BITMAP) {
+    PixelStoreAttrib store = ctx->pixelStore;
+    store.unpackSkipImages = 0;  // a 2D image
+    const texture::ClientLayout layout = texture::unpackLayout(store, width, height, format, type);
+    const bool read = compiling || (ctx->rasterPos.valid && ctx->renderMode.mode == GL_RENDER &&
+                                    drawPixelsTypeError(*ctx, format, type) == GL_NO_ERROR);
+    if (read) {
+      GLenum error;
+      const uint8_t* src =
+          api::pixelBufferMemory(*ctx, ctx->pixelStore.pixelUnpackBufferBinding,
+                                 static_cast<const uint8_t*>(pixels), layout.extent(width, height, 1), error);
+      if (error) return ctx->recordError(error);  // a bad pixel unpack buffer
+      return drawPixelsUnpacked(width, height, format, type, layout, src,
+                                src ? layout.extent(width, height, 1) : 0);
+    }
   }
-  pixelsInFeedbackOrSelect(*ctx, GL_DRAW_PIXEL_TOKEN);
+  drawPixelsUnpacked(width, height, format, type, texture::ClientLayout{}, nullptr, 0);
 }
 
 GLAPI void APIENTRY glCopyPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum type) {
@@ -310,10 +347,14 @@ GLAPI void APIENTRY glCopyPixels(GLint x, GLint y, GLsizei width, GLsizei height
   if (type != GL_COLOR && type != GL_DEPTH && type != GL_STENCIL) return ctx->recordError(GL_INVALID_ENUM);
   if (type == GL_STENCIL || (type == GL_DEPTH && ctx->framebuffer.depth.bits() == 0))
     return ctx->recordError(GL_INVALID_OPERATION);
+  // No read buffer (glReadBuffer(GL_NONE)): Mesa's _mesa_source_buffer_exists.
+  if (type == GL_COLOR && ctx->framebuffer.bound() && !ctx->framebuffer.read.pixels)
+    return ctx->recordError(GL_INVALID_OPERATION);
   if (!ctx->rasterPos.valid) return;
   if (ctx->renderMode.mode == GL_RENDER) {
-    if (width > 0 && height > 0) ctx->recordError(GL_INVALID_OPERATION);  // not implemented yet
-    return;
+    if (width == 0 || height == 0) return;
+    if (type == GL_COLOR) return pipeline::copyColorPixels(*ctx, x, y, width, height);
+    return ctx->recordError(GL_INVALID_OPERATION);  // GL_DEPTH: not implemented yet
   }
   pixelsInFeedbackOrSelect(*ctx, GL_COPY_PIXEL_TOKEN);
 }
@@ -425,7 +466,9 @@ GLAPI void APIENTRY glWindowPos2s(GLshort x, GLshort y) { windowPos(float(x), fl
 GLAPI void APIENTRY glWindowPos2i(GLint x, GLint y) { windowPos(float(x), float(y), 0.0f); }
 GLAPI void APIENTRY glWindowPos2f(GLfloat x, GLfloat y) { windowPos(x, y, 0.0f); }
 GLAPI void APIENTRY glWindowPos2d(GLdouble x, GLdouble y) { windowPos(float(x), float(y), 0.0f); }
-GLAPI void APIENTRY glWindowPos3s(GLshort x, GLshort y, GLshort z) { windowPos(float(x), float(y), float(z)); }
+GLAPI void APIENTRY glWindowPos3s(GLshort x, GLshort y, GLshort z) {
+  windowPos(float(x), float(y), float(z));
+}
 GLAPI void APIENTRY glWindowPos3i(GLint x, GLint y, GLint z) { windowPos(float(x), float(y), float(z)); }
 GLAPI void APIENTRY glWindowPos3f(GLfloat x, GLfloat y, GLfloat z) { windowPos(x, y, z); }
 GLAPI void APIENTRY glWindowPos3d(GLdouble x, GLdouble y, GLdouble z) {

@@ -2,10 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
+#include "fragment/texture_stage.h"
 #include "pipeline/draw.h"
 #include "raster/pixel_rect.h"
 #include "state/context.h"
+#include "texture/internal_format.h"
+#include "texture/texture_image.h"
 
 namespace glfixed::pipeline {
 
@@ -126,6 +130,281 @@ void drawBitmap(Context& ctx, int width, int height, float xorig, float yorig, c
     for (int i = 0; i < width; ++i)
       if (bits[j * rowBytes + (i >> 3)] & (0x80u >> (i & 7)))
         c.on[size_t(py + j) * BitmapCache::kWidth + size_t(px + i)] = 1;
+}
+
+namespace {
+
+// The internal format st_DrawPixels gives its temporary texture for a colour
+// image of `type` (st_cb_drawpixels.c, internal_format). Mesa applies the
+// scale and bias in its fragment shader, on the sampled value; here they are
+// applied while unpacking, into 16 bits a channel so that the value keeps
+// its precision until the colour is written (a float texture in Mesa).
+GLint drawPixelsInternalFormat(GLenum type, bool scaleBias) {
+  if (scaleBias) return GL_RGBA16;
+  switch (type) {
+    case GL_UNSIGNED_BYTE_3_3_2:
+    case GL_UNSIGNED_BYTE_2_3_3_REV: return GL_R3_G3_B2;
+    case GL_UNSIGNED_SHORT_4_4_4_4:
+    case GL_UNSIGNED_SHORT_4_4_4_4_REV: return GL_RGBA4;
+    case GL_UNSIGNED_SHORT_5_6_5:
+    case GL_UNSIGNED_SHORT_5_6_5_REV: return GL_RGB;  // RGB565: B5G6R5 matches exactly
+    case GL_UNSIGNED_SHORT_5_5_5_1:
+    case GL_UNSIGNED_SHORT_1_5_5_5_REV: return GL_RGB5_A1;
+    case GL_UNSIGNED_INT_10_10_10_2:
+    case GL_UNSIGNED_INT_2_10_10_10_REV: return GL_RGB10_A2;
+    case GL_UNSIGNED_SHORT:
+    case GL_UNSIGNED_INT:
+    case GL_SHORT:
+    case GL_INT:
+    case GL_FLOAT: return GL_RGBA16;  // Mesa: RGBA16, RGBA16_SNORM, RGBA32F
+    default: return GL_RGBA8;
+  }
+}
+
+// Mesa's lroundf of the raster position, saturated so that far-off
+// positions stay ints.
+long long roundToInt(float v) {
+  if (!(v > -1e9f)) return -1000000000;  // NaN too
+  if (v > 1e9f) return 1000000000;
+  return std::lround(v);
+}
+
+// The temporary texture and its quad: the image drawn at window (x, y)
+// zoomed by the pixel zoom (draw_textured_quad). `topDown`: texture row 0 is
+// the image's top row (glCopyPixels reads the buffer that way), else its
+// bottom row (glDrawPixels).
+void drawTexturedQuad(Context& ctx, const texture::TextureObject& object, long long x, long long y, int width,
+                      int height, bool topDown) {
+  const PixelModeAttrib& pm = ctx.pixelMode;
+  const float zoomX = pm.zoomX, zoomY = pm.zoomY;
+  raster::PixelQuad q;
+  q.x0 = static_cast<float>(x);
+  q.y0 = static_cast<float>(y);
+  q.x1 = static_cast<float>(x) + static_cast<float>(width) * zoomX;
+  q.y1 = static_cast<float>(y) + static_cast<float>(height) * zoomY;
+  q.z = ctx.rasterPos.position.z;
+  q.s0 = 0.0f;
+  q.s1 = 1.0f;
+  // st_draw_quad puts t0 at y1 (the top): the bottom row of the image is
+  // t = 0 for glDrawPixels, the top row for glCopyPixels (invertTex).
+  q.t0 = topDown ? 0.0f : 1.0f;
+  q.t1 = topDown ? 1.0f : 0.0f;
+  q.texCoords = true;
+  const RasterPosState& rp = ctx.rasterPos;
+  q.color[0] = rp.color.r;
+  q.color[1] = rp.color.g;
+  q.color[2] = rp.color.b;
+  q.color[3] = rp.color.a;
+  if (std::isnan(q.x1) || std::isnan(q.y1) || q.x0 == q.x1 || q.y0 == q.y1) return;
+  const float w = static_cast<float>(ctx.framebuffer.width()),
+              h = static_cast<float>(ctx.framebuffer.height());
+  // A quad wholly off the buffer draws nothing.
+  if (std::max(q.x0, q.x1) <= 0 || std::min(q.x0, q.x1) >= w || std::max(q.y0, q.y1) <= 0 ||
+      std::min(q.y0, q.y1) >= h)
+    return;
+  fragment::TextureStage stage;
+  fragment::TextureStage::Unit& unit = stage.units[0];
+  if (!texture::makeSamplerView(object, GL_TEXTURE_2D, 0.0f, unit.view)) return;
+  unit.unit = 0;
+  unit.env.env.mode = GL_REPLACE;  // the fragment colour is the texel (gl_Color replaced)
+  unit.env.baseFormat = GL_RGBA;
+  stage.unitCount = 1;
+  // The quad goes down the draw module like any fan (st_draw_quad): in clip
+  // space x / width * 2 - 1, clipped against the view volume when it
+  // reaches past the buffer (which moves its texture coordinates), the
+  // viewport the whole buffer.
+  primitive::PrimitiveState ps;
+  ps.mode = GL_TRIANGLE_FAN;
+  ps.viewportWidth = ctx.framebuffer.width();
+  ps.viewportHeight = ctx.framebuffer.height();
+  ps.constantPrimary = true;
+  ps.raster = pixelRectRasterState(ctx);
+  ps.raster.textures = &stage;
+  ps.raster.texCoordUnits = 1;
+  ps.raster.firstVertexConvention = false;  // the state tracker's rasterizer state
+  ShadedVertices v;
+  const float cz = q.z * 2.0f - 1.0f;
+  auto clipX = [&](float x) { return x / w * 2.0f - 1.0f; };
+  auto clipY = [&](float y) { return y / h * 2.0f - 1.0f; };
+  // st_draw_quad's vertices: (x0, y1), (x1, y1), (x1, y0), (x0, y0).
+  const float xs[4] = {q.x0, q.x1, q.x1, q.x0}, ys[4] = {q.y1, q.y1, q.y0, q.y0};
+  const float ss[4] = {q.s0, q.s1, q.s1, q.s0}, ts[4] = {q.t0, q.t0, q.t1, q.t1};
+  v.texCoordUnits = 1;
+  for (int i = 0; i < 4; ++i) {
+    v.clip.emplace_back(clipX(xs[i]), clipY(ys[i]), cz, 1.0f);
+    v.primary[0].emplace_back(q.color[0], q.color[1], q.color[2], q.color[3]);
+    v.texCoord[0].emplace_back(ss[i], ts[i], 0.0f, 1.0f);
+  }
+  intoDrawBuffers(ctx, [&](Framebuffer& fb) { primitive::drawPrimitives(ps, v, fb); });
+}
+
+std::unique_ptr<texture::TextureObject> temporaryTexture() {
+  auto object = std::make_unique<texture::TextureObject>();
+  object->target = GL_TEXTURE_2D;
+  texture::SamplerParams& p = object->params;
+  p.minFilter = p.magFilter = GL_NEAREST;
+  p.wrapS = p.wrapT = p.wrapR = GL_CLAMP_TO_EDGE;
+  p.maxLevel = 0;
+  return object;
+}
+
+// blit_copy_pixels (st_cb_drawpixels.c): without zoom, pixel transfer or
+// a fragment operation that reads or changes what is written, Mesa copies
+// with a blit when the rectangles do not overlap in the same buffer. A blit
+// writes every channel: the colour write mask is not applied (measured:
+// scene pixel_copy). The rectangles are cut to the read buffer, then the
+// destination to the draw buffer and the scissor box. True when done so.
+bool copyAsBlit(Context& ctx, int srcX, int srcY, int width, int height, long long dstX, long long dstY) {
+  const PixelModeAttrib& pm = ctx.pixelMode;
+  const ColorBufferAttrib& cb = ctx.colorBuffer;
+  const DepthBufferAttrib& d = ctx.depth;
+  const StencilAttrib::Face& sf = ctx.stencil.face[0];
+  Framebuffer& fb = ctx.framebuffer;
+  if (pm.zoomX != 1.0f || pm.zoomY != 1.0f || pm.scale != glm::vec4(1) || pm.bias != glm::vec4(0) ||
+      pm.mapColor || cb.blend || cb.alphaTest || (cb.colorLogicOp && cb.logicOpMode != GL_COPY) ||
+      (d.test && (d.func != GL_ALWAYS || d.writeMask)) || ctx.fog.enabled ||
+      (ctx.stencil.test && (sf.fail != GL_KEEP || sf.depthFail != GL_KEEP || sf.depthPass != GL_KEEP)) ||
+      fb.drawsIntoBoth(cb.drawBuffer))
+    return false;
+  const ColorBuffer& read = fb.read;
+  // _mesa_clip_readpixels, then _mesa_clip_drawpixels of the rest.
+  long long sx0 = srcX, sy0 = srcY, sx1 = static_cast<long long>(srcX) + width,
+            sy1 = static_cast<long long>(srcY) + height;
+  long long dx0 = dstX, dy0 = dstY;
+  auto cutLow = [](long long& a0, long long& b0, long long lo) {
+    if (a0 < lo) {
+      b0 += lo - a0;
+      a0 = lo;
+    }
+  };
+  cutLow(sx0, dx0, 0);
+  cutLow(sy0, dy0, 0);
+  sx1 = std::min<long long>(sx1, read.width);
+  sy1 = std::min<long long>(sy1, read.height);
+  if (sx0 >= sx1 || sy0 >= sy1) return true;
+  long long bx0 = 0, by0 = 0, bx1 = fb.width(), by1 = fb.height();
+  if (ctx.scissor.test) {
+    const ScissorAttrib& sc = ctx.scissor;
+    bx0 = std::max<long long>(bx0, sc.x);
+    by0 = std::max<long long>(by0, sc.y);
+    bx1 = std::min<long long>(bx1, static_cast<long long>(sc.x) + sc.width);
+    by1 = std::min<long long>(by1, static_cast<long long>(sc.y) + sc.height);
+  }
+  cutLow(dx0, sx0, bx0);
+  cutLow(dy0, sy0, by0);
+  const long long w = std::min(sx1 - sx0, bx1 - dx0), h = std::min(sy1 - sy0, by1 - dy0);
+  if (w <= 0 || h <= 0) return true;
+  // The same buffer and overlapping rectangles: the textured quad instead.
+  if (read.pixels == fb.color.pixels && sx0 < dx0 + w && dx0 < sx0 + w && sy0 < dy0 + h && dy0 < sy0 + h)
+    return false;
+  for (long long j = 0; j < h; ++j)
+    for (long long i = 0; i < w; ++i) {
+      uint8_t rgba[4];
+      read.read(static_cast<int>(sx0 + i), static_cast<int>(sy0 + j), rgba);
+      fb.color.write(static_cast<int>(dx0 + i), static_cast<int>(dy0 + j), rgba);
+    }
+  return true;
+}
+
+}  // namespace
+
+void drawColorPixels(Context& ctx, const PixelImage& image) {
+  flushBitmapCache(ctx);
+  if (!ctx.framebuffer.bound() || image.width <= 0 || image.height <= 0) return;
+  const RasterPosState& rp = ctx.rasterPos;
+  long long x = roundToInt(rp.position.x), y = roundToInt(rp.position.y);
+  int width = image.width, height = image.height;
+  texture::ClientLayout layout = image.layout;
+  const PixelModeAttrib& pm = ctx.pixelMode;
+  // Without zoom Mesa first cuts the rectangle to the buffer and the scissor
+  // box (_mesa_clip_drawpixels); the pixels drawn are the same, the texture
+  // smaller.
+  if (pm.zoomX == 1.0f && pm.zoomY == 1.0f) {
+    int x0 = 0, y0 = 0, x1 = ctx.framebuffer.width(), y1 = ctx.framebuffer.height();
+    if (ctx.scissor.test) {
+      const ScissorAttrib& sc = ctx.scissor;
+      x0 = std::max(x0, sc.x);
+      y0 = std::max(y0, sc.y);
+      x1 = static_cast<int>(std::min<long long>(x1, static_cast<long long>(sc.x) + sc.width));
+      y1 = static_cast<int>(std::min<long long>(y1, static_cast<long long>(sc.y) + sc.height));
+    }
+    const long long skipX = std::max<long long>(0, x0 - x), skipY = std::max<long long>(0, y0 - y);
+    const long long endX = std::min<long long>(width, x1 - x), endY = std::min<long long>(height, y1 - y);
+    if (skipX >= endX || skipY >= endY) return;
+    layout.start +=
+        static_cast<size_t>(skipX) * layout.groupBytes + static_cast<size_t>(skipY) * layout.rowStride;
+    width = static_cast<int>(endX - skipX);
+    height = static_cast<int>(endY - skipY);
+    x += skipX;
+    y += skipY;
+  }
+  // clamp_size: at most the largest texture.
+  width = std::min(width, texture::kMaxTextureSize);
+  height = std::min(height, texture::kMaxTextureSize);
+  if (!image.pixels) return ctx.recordError(GL_OUT_OF_MEMORY);  // make_texture fails on a null image
+  const bool scaleBias = pm.scale != glm::vec4(1) || pm.bias != glm::vec4(0);
+  const GLint internalFormat = drawPixelsInternalFormat(image.type, scaleBias);
+  auto object = temporaryTexture();
+  texture::TextureImage& texImage = object->face[0][0];
+  if (!texture::defineImage(texImage, internalFormat,
+                            texture::chooseTexelFormat(internalFormat, image.format, image.type), width,
+                            height, 1))
+    return ctx.recordError(GL_OUT_OF_MEMORY);
+  PixelModeAttrib transfer;  // only the scale and bias
+  transfer.scale = pm.scale;
+  transfer.bias = pm.bias;
+  texture::unpackImage(layout, image.pixels, image.format, image.type, transfer, width, height, 1, texImage,
+                       0, 0, 0);
+  drawTexturedQuad(ctx, *object, x, y, width, height, false);
+}
+
+void copyColorPixels(Context& ctx, int srcX, int srcY, int width, int height) {
+  flushBitmapCache(ctx);
+  Framebuffer& fb = ctx.framebuffer;
+  if (!fb.bound() || !fb.read.pixels || width <= 0 || height <= 0) return;
+  const RasterPosState& rp = ctx.rasterPos;
+  const long long x = roundToInt(rp.position.x), y = roundToInt(rp.position.y);
+  const ColorBuffer& read = fb.read;
+  // The source cut to the read buffer (_mesa_clip_readpixels); wholly
+  // outside: nothing is drawn.
+  const long long rx0 = std::max<long long>(0, srcX), ry0 = std::max<long long>(0, srcY);
+  const long long rx1 = std::min<long long>(read.width, static_cast<long long>(srcX) + width);
+  const long long ry1 = std::min<long long>(read.height, static_cast<long long>(srcY) + height);
+  if (rx0 >= rx1 || ry0 >= ry1) return;
+  if (copyAsBlit(ctx, srcX, srcY, width, height, x, y)) return;
+  width = std::min(width, texture::kMaxTextureSize);
+  height = std::min(height, texture::kMaxTextureSize);
+  const PixelModeAttrib& pm = ctx.pixelMode;
+  const bool scaleBias = pm.scale != glm::vec4(1) || pm.bias != glm::vec4(0);
+  auto object = temporaryTexture();
+  texture::TextureImage& texImage = object->face[0][0];
+  const GLint internalFormat = scaleBias ? GL_RGBA16 : GL_RGBA8;
+  const texture::TexelFormat format = scaleBias ? texture::TexelFormat::RGBA16 : texture::TexelFormat::RGBA8;
+  if (!texture::defineImage(texImage, internalFormat, format, width, height, 1))
+    return ctx.recordError(GL_OUT_OF_MEMORY);
+  // The whole source is read before anything is drawn (overlapping copies),
+  // texture row 0 the top row; what lies outside the read buffer stays 0.
+  for (long long sy = ry0; sy < ry1; ++sy) {
+    const int row = static_cast<int>(static_cast<long long>(srcY) + height - 1 - sy);
+    if (row < 0 || row >= height) continue;
+    for (long long sx = rx0; sx < rx1; ++sx) {
+      const int col = static_cast<int>(sx - srcX);
+      if (col >= width) break;
+      uint8_t rgba[4];
+      read.read(static_cast<int>(sx), static_cast<int>(sy), rgba);
+      uint8_t* t = texImage.texels.data() + size_t(row) * texImage.rowStride +
+                   size_t(col) * texture::texelFormatInfo(format).bytesPerTexel;
+      if (!scaleBias) {
+        for (int k = 0; k < 4; ++k) t[k] = rgba[k];
+      } else {
+        float c[4];
+        for (int k = 0; k < 4; ++k)
+          c[k] = static_cast<float>(rgba[k]) * (1.0f / 255.0f) * pm.scale[k] + pm.bias[k];
+        texture::storeTexel(format, c, t);
+      }
+    }
+  }
+  drawTexturedQuad(ctx, *object, x, y, width, height, true);
 }
 
 }  // namespace glfixed::pipeline

@@ -3,7 +3,11 @@
 // Mesa's state tracker draws them on llvmpipe (raster/pixel_rect.h).
 #pragma once
 
+#include <GL/gl.h>
+
 #include <cstdint>
+
+#include "texture/unpack.h"
 
 namespace glfixed {
 class Context;
@@ -25,6 +29,24 @@ inline int bitmapRowBytes(int width) { return (width + 7) / 8; }
 // keeps as a texture) flushes the cache and draws at once.
 void drawBitmap(Context& ctx, int width, int height, float xorig, float yorig, const uint8_t* bits,
                 bool fromList);
+
+// A client image of glDrawPixels: `pixels` laid out as `layout` says (the
+// unpack state at the call, or at list compile time).
+struct PixelImage {
+  int width = 0, height = 0;
+  GLenum format = GL_RGBA, type = GL_UNSIGNED_BYTE;
+  texture::ClientLayout layout;
+  const uint8_t* pixels = nullptr;
+};
+
+// glDrawPixels of a colour format in GL_RENDER at the valid raster position
+// (§3.6.4), as Mesa's st_DrawPixels draws it: the image becomes a texture
+// sampled NEAREST by a quad from the rounded raster position, zoomed.
+void drawColorPixels(Context& ctx, const PixelImage& image);
+
+// glCopyPixels(GL_COLOR) (§4.3.3): the source rectangle of the read buffer,
+// read whole first, drawn as glDrawPixels draws at the raster position.
+void copyColorPixels(Context& ctx, int x, int y, int width, int height);
 
 // Draws what the bitmap cache holds, with the state of now (Mesa's
 // st_flush_bitmap_cache): before every draw, clear, read, copy and flush.

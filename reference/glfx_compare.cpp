@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <cinttypes>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -34,8 +35,15 @@ struct Image {
     uint32_t cleared_depth = 0;
     int guard_damage = 0;
     std::map<std::string, std::string> info;
-    std::vector<uint8_t> rgba;       // width*height*4, top row first
+    std::vector<uint8_t> rgba;       // width*height*4, top row first (8-bit, for the pictures)
     std::vector<uint8_t> depth;      // depth_w*depth_h*depth_bytes
+    // The samples in the buffer's precision (header field 10, scene.c's
+    // sample_kind): "8" bytes, "16" 16-bit unorm, "32f" floats as ordered
+    // integers (so a difference is in units in the last place), "565" the
+    // 5-6-5 channels' own values. Differences count in those units.
+    std::string kind = "8";
+    std::vector<int64_t> val;        // width*height*4
+    int64_t key[4] = {3, 5, 7, 0};   // the KEY clear in that precision
 
     bool has_depth() const { return depth_bytes > 0 && depth_w == width && depth_h == height; }
     uint32_t depth_at(size_t i) const {
@@ -45,9 +53,8 @@ struct Image {
         return v;
     }
     bool covered(size_t i) const {
-        static const uint8_t key[4] = {3, 5, 7, 0};
         for (int c = 0; c < channels; c++)
-            if (rgba[i * 4 + c] != key[c]) return true;
+            if (val[i * 4 + c] != key[c]) return true;
         return has_depth() && depth_at(i) != cleared_depth;
     }
 };
@@ -65,10 +72,14 @@ Image load(const std::string &path) {
     if (!f) return im;
     im.present = true;
     char line[4096];
+    char kind[16] = "8";
     unsigned cleared = 0;
+    int fields = 0;
     if (!std::fgets(line, sizeof line, f) ||
-        std::sscanf(line, "GLFX1 %d %d %d %d %d %d %u %d", &im.width, &im.height, &im.channels,
-                    &im.depth_w, &im.depth_h, &im.depth_bytes, &cleared, &im.guard_damage) != 8 ||
+        (fields = std::sscanf(line, "GLFX1 %d %d %d %d %d %d %u %d %15s", &im.width, &im.height, &im.channels,
+                              &im.depth_w, &im.depth_h, &im.depth_bytes, &cleared, &im.guard_damage, kind)) < 8 ||
+        (std::strcmp(kind, "8") != 0 && std::strcmp(kind, "16") != 0 && std::strcmp(kind, "32f") != 0 &&
+         std::strcmp(kind, "565") != 0) ||
         im.width <= 0 || im.height <= 0 || im.width > 16384 || im.height > 16384 ||
         im.depth_w < 0 || im.depth_h < 0 || im.depth_w > 16384 || im.depth_h > 16384 ||
         im.depth_bytes < 0 || im.depth_bytes > 4) {
@@ -88,12 +99,51 @@ Image load(const std::string &path) {
         size_t eq = kv.find('=');
         if (eq != std::string::npos) im.info[kv.substr(0, eq)] = kv.substr(eq + 1);
     }
-    im.rgba.resize(size_t(im.width) * im.height * 4);
+    im.kind = kind;
+    const size_t samples = size_t(im.width) * im.height * 4;
+    const int sample_bytes = im.kind == "16" ? 2 : im.kind == "32f" ? 4 : 1;
+    std::vector<uint8_t> raw(samples * sample_bytes);
     im.depth.resize(size_t(im.depth_w) * im.depth_h * im.depth_bytes);
-    if (std::fread(im.rgba.data(), 1, im.rgba.size(), f) != im.rgba.size() ||
+    if (std::fread(raw.data(), 1, raw.size(), f) != raw.size() ||
         std::fread(im.depth.data(), 1, im.depth.size(), f) != im.depth.size())
         im.error = "truncated";
     std::fclose(f);
+    // A float as an integer ordered like the floats: neighbours differ by 1.
+    auto ordered = [](float v) {
+        int32_t b;
+        std::memcpy(&b, &v, 4);
+        return b >= 0 ? int64_t(b) : -int64_t(b & 0x7fffffff);
+    };
+    if (im.kind == "16") {
+        for (int c = 0; c < 4; c++) im.key[c] = int64_t(im.key[c]) * 257;
+    } else if (im.kind == "32f") {
+        for (int c = 0; c < 4; c++) im.key[c] = ordered(float(im.key[c]) / 255.0f);
+    } else if (im.kind == "565") {
+        const int64_t k[4] = {0, 1, 1, 0};
+        for (int c = 0; c < 4; c++) im.key[c] = k[c];
+    }
+    im.val.resize(samples);
+    im.rgba.resize(samples);
+    for (size_t i = 0; i < samples; i++) {
+        if (im.kind == "16") {
+            uint16_t v;
+            std::memcpy(&v, &raw[i * 2], 2);
+            im.val[i] = v;
+            im.rgba[i] = uint8_t(v >> 8);
+        } else if (im.kind == "32f") {
+            float v;
+            std::memcpy(&v, &raw[i * 4], 4);
+            im.val[i] = ordered(v);
+            im.rgba[i] = uint8_t(std::lrint(std::min(std::max(v, 0.0f), 1.0f) * 255.0f));
+        } else if (im.kind == "565") {
+            const int c = int(i % 4), v = raw[i];
+            im.val[i] = v;
+            im.rgba[i] = c == 3 ? uint8_t(v) : c == 1 ? uint8_t((v << 2) | (v >> 4)) : uint8_t((v << 3) | (v >> 2));
+        } else {
+            im.val[i] = raw[i];
+            im.rgba[i] = raw[i];
+        }
+    }
     return im;
 }
 
@@ -159,9 +209,10 @@ void compare(const Image &a, const Image &b, Stats &st, std::vector<uint8_t> *di
             continue;
         }
         if (!ca) continue;  // both uncovered: identical key colour (black)
-        int md = 0;
+        int64_t md64 = 0;
         for (int c = 0; c < 4; c++)
-            md = std::max(md, std::abs(int(a.rgba[i * 4 + c]) - int(b.rgba[i * 4 + c])));
+            md64 = std::max<int64_t>(md64, std::llabs(a.val[i * 4 + c] - b.val[i * 4 + c]));
+        const int md = int(std::min<int64_t>(md64, 1 << 30));
         st.max_diff = std::max(st.max_diff, md);
         if (md == 0) {
             st.exact++;
@@ -276,7 +327,7 @@ int main(int argc, char **argv) {
     bool pass = true;
     Stats st;
 
-    if (ma.width != ga.width || ma.height != ga.height || ma.channels != ga.channels) {
+    if (ma.width != ga.width || ma.height != ga.height || ma.channels != ga.channels || ma.kind != ga.kind) {
         char buf[160];
         std::snprintf(buf, sizeof buf, "size/format differ: %dx%dx%d vs %dx%dx%d", ma.width,
                       ma.height, ma.channels, ga.width, ga.height, ga.channels);

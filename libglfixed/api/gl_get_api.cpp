@@ -257,8 +257,11 @@ bool queryCoreState(Context& ctx, GLenum pname, StateValue& out) {
     case GL_LINE_WIDTH_RANGE:
     case GL_ALIASED_LINE_WIDTH_RANGE: out.set({1.0, 255.0}); return true;
     case GL_LINE_WIDTH_GRANULARITY: out.set({double(0.1f)}); return true;
-    case GL_RED_BITS: case GL_GREEN_BITS: case GL_BLUE_BITS: out.set({8.0}); return true;
-    case GL_ALPHA_BITS: out.set({hasAlpha ? 8.0 : 0.0}); return true;
+    // OSMesa's 5-6-5, 16-bit and float buffers report their own sizes.
+    case GL_RED_BITS: out.set({double(fb.front.channelBits(0))}); return true;
+    case GL_GREEN_BITS: out.set({double(fb.front.channelBits(1))}); return true;
+    case GL_BLUE_BITS: out.set({double(fb.front.channelBits(2))}); return true;
+    case GL_ALPHA_BITS: out.set({hasAlpha ? double(fb.front.channelBits(3)) : 0.0}); return true;
     case GL_DEPTH_BITS: out.set({double(fb.depth.bits())}); return true;
     case GL_STENCIL_BITS: out.set({double(fb.depth.stencilBits())}); return true;
     case GL_ACCUM_RED_BITS: case GL_ACCUM_GREEN_BITS: case GL_ACCUM_BLUE_BITS: case GL_ACCUM_ALPHA_BITS:

@@ -185,6 +185,7 @@ GLAPI void APIENTRY glClearColor(GLclampf r, GLclampf g, GLclampf b, GLclampf a)
   if (!ctx) return;
   const glm::vec4 c(api::clamp01(r), api::clamp01(g), api::clamp01(b), api::clamp01(a));
   api::setStateWithoutFlush(*ctx, ctx->colorBuffer.clearColor, c, GL_COLOR_BUFFER_BIT);
+  ctx->colorBuffer.clearColorUnclamped = glm::vec4(r, g, b, a);
 }
 
 // Colour-index state of an RGBA context (GL 2.1 §4.2.2, §4.2.3): stored and

@@ -15,6 +15,9 @@ struct AlphaTestState {
   // it on an 8-bit colour buffer: converted to a byte like the fragment's
   // alpha (lp_build_alpha_test quantizes both to the buffer's unorm8).
   int32_t ref = 0;
+  // The reference itself, for 16-bit and float buffers, where llvmpipe
+  // compares floats (fragment/wide_color.inc).
+  float refFloat = 0.0f;
   bool active() const { return func != GL_ALWAYS; }
 };
 

@@ -30,6 +30,8 @@ BlendState makeBlendState(bool blend, GLenum srcRGB, GLenum dstRGB, GLenum srcAl
   // llvmpipe: the constant colour as 8 bits, clamped and rounded as a
   // fragment's colour (rint(c * 255): 0.5 gives 128, 0.3 gives 76).
   for (int k = 0; k < 4; ++k) b.constant[k] = raster::colorToUnorm8(color[k]);
+  for (int k = 0; k < 4; ++k)
+    b.constantFloat[k] = color[k] > 0.0f ? (color[k] < 1.0f ? color[k] : 1.0f) : 0.0f;
   return b;
 }
 

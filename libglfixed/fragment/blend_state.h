@@ -19,6 +19,8 @@ struct BlendState {
   GLenum logicOp = GL_COPY;
   // glBlendColor clamped and rounded to 8 bits as a fragment colour is.
   int32_t constant[4] = {0, 0, 0, 0};
+  // The same clamped to [0, 1], for 16-bit and float buffers (wide_color.inc).
+  float constantFloat[4] = {0, 0, 0, 0};
 };
 
 // The snapshot of the context's colour buffer state (GL_BLEND, the factors,

@@ -9,6 +9,7 @@
 #include <GL/gl.h>
 
 #include <climits>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 
@@ -27,6 +28,7 @@ namespace generic {
 #include "fragment/blend.inc"
 #include "fragment/fog.inc"
 #include "fragment/block_shader.inc"
+#include "fragment/wide_color.inc"
 #undef GLFIXED_BLOCK_AVX2
 }  // namespace generic
 
@@ -38,6 +40,7 @@ namespace avx2 {
 #include "fragment/blend.inc"
 #include "fragment/fog.inc"
 #include "fragment/block_shader.inc"
+#include "fragment/wide_color.inc"
 #undef GLFIXED_BLOCK_AVX2
 }  // namespace avx2
 #pragma GCC pop_options
@@ -58,6 +61,7 @@ AlphaTestState makeAlphaTest(bool enabled, GLenum func, float ref) {
   if (!enabled) return a;
   a.func = func;
   a.ref = raster::colorToUnorm8(ref);
+  a.refFloat = ref;
   return a;
 }
 

@@ -60,11 +60,17 @@ void AccumBuffer::accumulate(const ColorBuffer& src, const PixelBox& box, float 
   const float scale = value * 32767.0f;
   for (int y = box.y0; y < box.y1; ++y)
     for (int x = box.x0; x < box.x1; ++x) {
-      uint8_t rgba[4];
-      src.read(x, y, rgba);
+      float f[4];
+      if (src.channels == ChannelType::kUnorm8) {
+        uint8_t rgba[4];
+        src.read(x, y, rgba);
+        for (int k = 0; k < 4; ++k) f[k] = unormToFloat(rgba[k]);
+      } else {
+        src.readFloat(x, y, f);  // Mesa unpacks any buffer to floats
+      }
       int16_t* acc = &values_[index(x, y)];
       for (int k = 0; k < 4; ++k) {
-        const int16_t c = truncToShort(unormToFloat(rgba[k]) * scale);
+        const int16_t c = truncToShort(f[k] * scale);
         acc[k] = load ? c : wrapToShort(int32_t{acc[k]} + c);
       }
     }
@@ -87,6 +93,20 @@ void AccumBuffer::returnTo(const ColorBuffer& dst, const PixelBox& box, float va
   if (!present_ || !dst.pixels) return;
   const float scale = value / 32767.0f;
   const int offset[4] = {dst.red, dst.green, dst.blue, dst.alpha};
+  if (dst.channels != ChannelType::kUnorm8) {
+    // 5-6-5, 16-bit and float buffers: the clamped float, in the buffer's precision.
+    for (int y = box.y0; y < box.y1; ++y)
+      for (int x = box.x0; x < box.x1; ++x) {
+        const int16_t* acc = &values_[index(x, y)];
+        float f[4];
+        for (int k = 0; k < 4; ++k) {
+          const float v = static_cast<float>(acc[k]) * scale;
+          f[k] = v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f;
+        }
+        dst.writeFloat(x, y, f, writeMask);
+      }
+    return;
+  }
   for (int y = box.y0; y < box.y1; ++y)
     for (int x = box.x0; x < box.x1; ++x) {
       const int16_t* acc = &values_[index(x, y)];

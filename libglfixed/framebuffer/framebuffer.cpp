@@ -2,18 +2,212 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 namespace glfixed {
 
 void ColorBuffer::setFormat(PixelFormat f) {
   format = f;
+  channels = ChannelType::kUnorm8;
   switch (f) {
-    case PixelFormat::kRGBA: bytesPerPixel = 4; red = 0; green = 1; blue = 2; alpha = 3; break;
-    case PixelFormat::kBGRA: bytesPerPixel = 4; red = 2; green = 1; blue = 0; alpha = 3; break;
-    case PixelFormat::kARGB: bytesPerPixel = 4; red = 1; green = 2; blue = 3; alpha = 0; break;
-    case PixelFormat::kRGB:  bytesPerPixel = 3; red = 0; green = 1; blue = 2; alpha = -1; break;
-    case PixelFormat::kBGR:  bytesPerPixel = 3; red = 2; green = 1; blue = 0; alpha = -1; break;
-    case PixelFormat::kBGRX: bytesPerPixel = 4; red = 2; green = 1; blue = 0; alpha = -1; break;
+    case PixelFormat::kRGBA:
+      bytesPerPixel = 4;
+      red = 0;
+      green = 1;
+      blue = 2;
+      alpha = 3;
+      break;
+    case PixelFormat::kBGRA:
+      bytesPerPixel = 4;
+      red = 2;
+      green = 1;
+      blue = 0;
+      alpha = 3;
+      break;
+    case PixelFormat::kARGB:
+      bytesPerPixel = 4;
+      red = 1;
+      green = 2;
+      blue = 3;
+      alpha = 0;
+      break;
+    case PixelFormat::kRGB:
+      bytesPerPixel = 3;
+      red = 0;
+      green = 1;
+      blue = 2;
+      alpha = -1;
+      break;
+    case PixelFormat::kBGR:
+      bytesPerPixel = 3;
+      red = 2;
+      green = 1;
+      blue = 0;
+      alpha = -1;
+      break;
+    case PixelFormat::kBGRX:
+      bytesPerPixel = 4;
+      red = 2;
+      green = 1;
+      blue = 0;
+      alpha = -1;
+      break;
+    case PixelFormat::kRGB565:
+      bytesPerPixel = 2;
+      red = 0;
+      green = 1;
+      blue = 2;
+      alpha = -1;
+      channels = ChannelType::kRGB565;
+      break;
+    case PixelFormat::kRGBA16:
+      bytesPerPixel = 8;
+      red = 0;
+      green = 1;
+      blue = 2;
+      alpha = 3;
+      channels = ChannelType::kUnorm16;
+      break;
+    case PixelFormat::kRGB16:
+      bytesPerPixel = 6;
+      red = 0;
+      green = 1;
+      blue = 2;
+      alpha = -1;
+      channels = ChannelType::kUnorm16;
+      break;
+    case PixelFormat::kRGBA32F:
+      bytesPerPixel = 16;
+      red = 0;
+      green = 1;
+      blue = 2;
+      alpha = 3;
+      channels = ChannelType::kFloat32;
+      break;
+    case PixelFormat::kRGB32F:
+      bytesPerPixel = 12;
+      red = 0;
+      green = 1;
+      blue = 2;
+      alpha = -1;
+      channels = ChannelType::kFloat32;
+      break;
+  }
+}
+
+int ColorBuffer::channelBits(int k) const {
+  if (k == 3 && alpha < 0) return 0;
+  switch (channels) {
+    case ChannelType::kUnorm8: return 8;
+    case ChannelType::kRGB565: return k == 1 ? 6 : 5;
+    case ChannelType::kUnorm16: return 16;
+    case ChannelType::kFloat32: return 32;
+  }
+  return 8;
+}
+
+namespace {
+
+// The 5-6-5 word's channels (red in the top bits) and their maxima.
+constexpr int kShift565[3] = {11, 5, 0};
+constexpr uint32_t kMax565[3] = {31, 63, 31};
+
+uint16_t load16(const uint8_t* p) {
+  uint16_t v;
+  std::memcpy(&v, p, 2);
+  return v;
+}
+void store16(uint8_t* p, uint16_t v) { std::memcpy(p, &v, 2); }
+
+// NaN gives 0.
+float clamp01(float v) { return v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f; }
+
+}  // namespace
+
+void ColorBuffer::writeConverted(int x, int y, const uint8_t rgba[4]) const {
+  uint8_t* p = pixel(x, y);
+  if (channels == ChannelType::kRGB565) {
+    // llvmpipe's 8-bit path keeps the top bits of each byte.
+    store16(p, static_cast<uint16_t>(((rgba[0] >> 3) << 11) | ((rgba[1] >> 2) << 5) | (rgba[2] >> 3)));
+    return;
+  }
+  const float f[4] = {rgba[0] * (1.0f / 255.0f), rgba[1] * (1.0f / 255.0f), rgba[2] * (1.0f / 255.0f),
+                      rgba[3] * (1.0f / 255.0f)};
+  writeFloat(x, y, f);
+}
+
+void ColorBuffer::readConverted(int x, int y, uint8_t rgba[4]) const {
+  if (channels == ChannelType::kRGB565) {
+    // Bit replication: the same bytes as rint(v * 255 / max).
+    const uint16_t w = load16(pixel(x, y));
+    const uint32_t r = w >> 11, g = (w >> 5) & 63, b = w & 31;
+    rgba[0] = static_cast<uint8_t>((r << 3) | (r >> 2));
+    rgba[1] = static_cast<uint8_t>((g << 2) | (g >> 4));
+    rgba[2] = static_cast<uint8_t>((b << 3) | (b >> 2));
+    rgba[3] = 255;
+    return;
+  }
+  float f[4];
+  readFloat(x, y, f);
+  for (int k = 0; k < 4; ++k) rgba[k] = floatToUnorm8(f[k]);
+}
+
+void ColorBuffer::readFloat(int x, int y, float rgba[4]) const {
+  const uint8_t* p = pixel(x, y);
+  const int offset[4] = {red, green, blue, alpha};
+  switch (channels) {
+    case ChannelType::kUnorm8:
+      for (int k = 0; k < 4; ++k) rgba[k] = offset[k] >= 0 ? p[offset[k]] * (1.0f / 255.0f) : 1.0f;
+      return;
+    case ChannelType::kRGB565: {
+      const uint16_t w = load16(p);
+      for (int k = 0; k < 3; ++k)
+        rgba[k] =
+            static_cast<float>((w >> kShift565[k]) & kMax565[k]) * (1.0f / static_cast<float>(kMax565[k]));
+      rgba[3] = 1.0f;
+      return;
+    }
+    case ChannelType::kUnorm16:
+      for (int k = 0; k < 4; ++k)
+        rgba[k] = offset[k] >= 0 ? static_cast<float>(load16(p + 2 * offset[k])) * (1.0f / 65535.0f) : 1.0f;
+      return;
+    case ChannelType::kFloat32:
+      for (int k = 0; k < 4; ++k) {
+        rgba[k] = 1.0f;
+        if (offset[k] >= 0) std::memcpy(&rgba[k], p + 4 * offset[k], 4);
+      }
+      return;
+  }
+}
+
+void ColorBuffer::writeFloat(int x, int y, const float rgba[4], const bool* mask) const {
+  uint8_t* p = pixel(x, y);
+  const int offset[4] = {red, green, blue, alpha};
+  switch (channels) {
+    case ChannelType::kUnorm8:
+      for (int k = 0; k < 4; ++k)
+        if (offset[k] >= 0 && (!mask || mask[k])) p[offset[k]] = floatToUnorm8(rgba[k]);
+      return;
+    case ChannelType::kRGB565: {
+      uint32_t w = load16(p);
+      for (int k = 0; k < 3; ++k) {
+        if (mask && !mask[k]) continue;
+        const uint32_t v =
+            static_cast<uint32_t>(std::nearbyint(clamp01(rgba[k]) * static_cast<float>(kMax565[k])));
+        w = (w & ~(kMax565[k] << kShift565[k])) | (v << kShift565[k]);
+      }
+      store16(p, static_cast<uint16_t>(w));
+      return;
+    }
+    case ChannelType::kUnorm16:
+      for (int k = 0; k < 4; ++k)
+        if (offset[k] >= 0 && (!mask || mask[k]))
+          store16(p + 2 * offset[k], static_cast<uint16_t>(std::nearbyint(clamp01(rgba[k]) * 65535.0f)));
+      return;
+    case ChannelType::kFloat32:
+      for (int k = 0; k < 4; ++k)
+        if (offset[k] >= 0 && (!mask || mask[k])) std::memcpy(p + 4 * offset[k], &rgba[k], 4);
+      return;
   }
 }
 
@@ -22,16 +216,22 @@ Framebuffer::Buffers Framebuffer::buffersNamed(GLenum buffer, bool forReading) c
   const Buffers back = twoBuffers ? Buffers::kBack : Buffers::kFront;
   switch (buffer) {
     case GL_NONE: return Buffers::kNone;
-    case GL_FRONT: case GL_FRONT_LEFT: return Buffers::kFront;
-    case GL_BACK: case GL_BACK_LEFT: return back;
-    case GL_LEFT: case GL_FRONT_AND_BACK:
-      return forReading || !twoBuffers ? Buffers::kFront : Buffers::kBoth;
-    case GL_RIGHT: case GL_FRONT_RIGHT: case GL_BACK_RIGHT: case GL_AUX0: case GL_AUX1: case GL_AUX2: case GL_AUX3:
-      return Buffers::kMissing;
+    case GL_FRONT:
+    case GL_FRONT_LEFT: return Buffers::kFront;
+    case GL_BACK:
+    case GL_BACK_LEFT: return back;
+    case GL_LEFT:
+    case GL_FRONT_AND_BACK: return forReading || !twoBuffers ? Buffers::kFront : Buffers::kBoth;
+    case GL_RIGHT:
+    case GL_FRONT_RIGHT:
+    case GL_BACK_RIGHT:
+    case GL_AUX0:
+    case GL_AUX1:
+    case GL_AUX2:
+    case GL_AUX3: return Buffers::kMissing;
     default:
       // GL_COLOR_ATTACHMENT0..31 (0x8CE0..) name no buffer of a window-system framebuffer.
-      return buffer >= 0x8CE0 && buffer <= 0x8CE0 + 31 ? Buffers::kMissing
-                                                                                 : Buffers::kUnknown;
+      return buffer >= 0x8CE0 && buffer <= 0x8CE0 + 31 ? Buffers::kMissing : Buffers::kUnknown;
   }
 }
 
@@ -39,7 +239,8 @@ void Framebuffer::selectBuffers(GLenum drawBuffer, GLenum readBuffer) {
   const auto view = [](Buffers b, const ColorBuffer& f, const ColorBuffer& bk) {
     switch (b) {
       case Buffers::kFront: return f;
-      case Buffers::kBack: case Buffers::kBoth: return bk;
+      case Buffers::kBack:
+      case Buffers::kBoth: return bk;
       default: return ColorBuffer{};  // GL_NONE: nothing is drawn or read
     }
   };

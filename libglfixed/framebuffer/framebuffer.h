@@ -17,24 +17,56 @@ namespace glfixed {
 
 // kBGRX: the 32-bit pixels of a depth-24 X11 TrueColor image (blue, green,
 // red, one unused byte): a window without alpha bits.
-enum class PixelFormat { kRGBA, kBGRA, kARGB, kRGB, kBGR, kBGRX };
+// The formats after kBGRX are OSMesa's other buffer types as llvmpipe stores
+// them (reference/MESA_FACTS.md, "OSMesa colour buffer types"): kRGB565 is a
+// 16-bit word, red in the top 5 bits (B5G6R5_UNORM); kRGBA16/kRGB16 have 16-bit
+// unorm channels, kRGBA32F/kRGB32F float ones, always in R, G, B(, A) order
+// (Mesa stores OSMESA_BGRA and OSMESA_ARGB of those types as RGBA too).
+enum class PixelFormat {
+  kRGBA,
+  kBGRA,
+  kARGB,
+  kRGB,
+  kBGR,
+  kBGRX,
+  kRGB565,
+  kRGBA16,
+  kRGB16,
+  kRGBA32F,
+  kRGB32F
+};
+
+// How a ColorBuffer stores a channel. The fragment stage's 8-bit arithmetic
+// serves kUnorm8 and kRGB565 (llvmpipe blends 5-6-5 in bytes); kUnorm16
+// blends in 16-bit fixed point, kFloat32 in float (fragment/wide_color.inc).
+enum class ChannelType : uint8_t { kUnorm8, kRGB565, kUnorm16, kFloat32 };
 
 struct ColorBuffer {
   uint8_t* pixels = nullptr;  // client memory, not owned
   int width = 0, height = 0;
-  int rowLength = 0;          // in pixels (OSMESA_ROW_LENGTH); >= width
-  bool yUp = true;            // OSMESA_Y_UP: row 0 of memory is the bottom row
+  int rowLength = 0;  // in pixels (OSMESA_ROW_LENGTH); >= width
+  bool yUp = true;    // OSMESA_Y_UP: row 0 of memory is the bottom row
   PixelFormat format = PixelFormat::kRGBA;
   int bytesPerPixel = 4;
-  // Byte offset of each channel inside a pixel; alpha is -1 where not stored.
+  // Byte offset of each channel inside a pixel (for kUnorm16 and kFloat32:
+  // the channel's index, 0..3); alpha is -1 where not stored. Unused by kRGB565.
   int red = 0, green = 1, blue = 2, alpha = 3;
+  ChannelType channels = ChannelType::kUnorm8;
 
   void setFormat(PixelFormat f);
+  // 16-bit or float channels: the fragment stage's wide path.
+  bool wide() const { return channels >= ChannelType::kUnorm16; }
+  bool hasAlpha() const { return alpha >= 0; }
+  // Bits a channel (GL_RED_BITS...; alpha: 0 without alpha).
+  int channelBits(int k) const;
   uint8_t* pixel(int x, int y) const {
     int row = yUp ? y : height - 1 - y;
     return pixels + (static_cast<size_t>(row) * rowLength + x) * bytesPerPixel;
   }
+  // Bytes in and out: the 8-bit formats' own; others convert (5-6-5: bit
+  // replication in, truncation out, as llvmpipe's 8-bit blend path does).
   void write(int x, int y, const uint8_t rgba[4]) const {
+    if (channels != ChannelType::kUnorm8) return writeConverted(x, y, rgba);
     uint8_t* p = pixel(x, y);
     p[red] = rgba[0];
     p[green] = rgba[1];
@@ -42,12 +74,23 @@ struct ColorBuffer {
     if (alpha >= 0) p[alpha] = rgba[3];
   }
   void read(int x, int y, uint8_t rgba[4]) const {
+    if (channels != ChannelType::kUnorm8) return readConverted(x, y, rgba);
     const uint8_t* p = pixel(x, y);
     rgba[0] = p[red];
     rgba[1] = p[green];
     rgba[2] = p[blue];
     rgba[3] = alpha >= 0 ? p[alpha] : 255;
   }
+  // Floats in and out, in the buffer's precision: unorm channels read as
+  // v / max and are written rint(clamp(v) * max); float channels as they are
+  // (a float buffer keeps clear colours outside [0, 1]). Alpha reads 1 where
+  // not stored. `mask`: the channels written (null: all).
+  void readFloat(int x, int y, float rgba[4]) const;
+  void writeFloat(int x, int y, const float rgba[4], const bool* mask = nullptr) const;
+
+ private:
+  void writeConverted(int x, int y, const uint8_t rgba[4]) const;
+  void readConverted(int x, int y, uint8_t rgba[4]) const;
 };
 
 // Depth values are unsigned integers of `bits` bits (0 = no depth buffer,
@@ -98,8 +141,8 @@ class DepthBuffer {
     else
       s8_[i] = static_cast<uint8_t>(s);
   }
-  void fill(uint32_t v);                                // depth, keeping the stencil
-  void fillStencil(uint32_t v, uint32_t writeMask);      // stencil, keeping the depth
+  void fill(uint32_t v);                             // depth, keeping the stencil
+  void fillStencil(uint32_t v, uint32_t writeMask);  // stencil, keeping the depth
 
  private:
   int bits_ = 0, stencilBits_ = 0, width_ = 0, height_ = 0;

@@ -17,11 +17,14 @@ using glfixed::PixelFormat;
 // The opaque handle of osmesa.h is a pointer to this.
 struct osmesa_context {
   Context context;
-  PixelFormat format;
+  GLenum osmesaFormat;             // OSMESA_RGBA, ... as created
+  PixelFormat format;              // how the bound buffer stores it (by the type of OSMesaMakeCurrent)
+  GLenum type = GL_UNSIGNED_BYTE;  // of the bound buffer
   int width = 0, height = 0;
   GLint userRowLength = 0;
   bool yUp = true;
-  osmesa_context(PixelFormat f, int depthBits, int stencilBits) : context(depthBits, stencilBits), format(f) {}
+  osmesa_context(GLenum osFormat, PixelFormat f, int depthBits, int stencilBits)
+      : context(depthBits, stencilBits), osmesaFormat(osFormat), format(f) {}
 };
 
 namespace {
@@ -35,20 +38,34 @@ bool pixelFormatOf(GLenum format, PixelFormat* out) {
     case OSMESA_ARGB: *out = PixelFormat::kARGB; return true;
     case OSMESA_RGB: *out = PixelFormat::kRGB; return true;
     case OSMESA_BGR: *out = PixelFormat::kBGR; return true;
-    default: return false;  // colour index and RGB 565 are not supported
+    case OSMESA_RGB_565: *out = PixelFormat::kRGB565; return true;
+    default: return false;  // colour index is not supported
   }
 }
 
-GLenum osmesaFormatOf(PixelFormat f) {
-  switch (f) {
-    case PixelFormat::kRGBA: return OSMESA_RGBA;
-    case PixelFormat::kBGRA: return OSMESA_BGRA;
-    case PixelFormat::kARGB: return OSMESA_ARGB;
-    case PixelFormat::kRGB: return OSMESA_RGB;
-    case PixelFormat::kBGR: return OSMESA_BGR;
-    case PixelFormat::kBGRX: break;  // a window's format, never OSMesa's
+// The buffer a (format, type) pair of OSMesaMakeCurrent is, as Mesa's OSMesa
+// picks llvmpipe's format (MESA_FACTS.md, "OSMesa colour buffer types"):
+// 16-bit and float buffers are R, G, B, A in memory whatever the OSMesa
+// format says (BGRA and ARGB too); OSMESA_BGR has only bytes (which Mesa
+// refuses and we draw), OSMESA_RGB_565 only GL_UNSIGNED_SHORT_5_6_5.
+bool bufferFormatOf(GLenum format, GLenum type, PixelFormat* out) {
+  const bool withAlpha = format == OSMESA_RGBA || format == OSMESA_BGRA || format == OSMESA_ARGB;
+  switch (type) {
+    case GL_UNSIGNED_BYTE: return format != OSMESA_RGB_565 && pixelFormatOf(format, out);
+    case GL_UNSIGNED_SHORT:
+      if (!withAlpha && format != OSMESA_RGB) return false;
+      *out = withAlpha ? PixelFormat::kRGBA16 : PixelFormat::kRGB16;
+      return true;
+    case GL_FLOAT:
+      if (!withAlpha && format != OSMESA_RGB) return false;
+      *out = withAlpha ? PixelFormat::kRGBA32F : PixelFormat::kRGB32F;
+      return true;
+    case GL_UNSIGNED_SHORT_5_6_5:
+      if (format != OSMESA_RGB_565) return false;
+      *out = PixelFormat::kRGB565;
+      return true;
+    default: return false;
   }
-  return OSMESA_RGBA;
 }
 
 // Mesa's choice of depth buffer: with a stencil buffer any depth request gives
@@ -92,8 +109,8 @@ GLAPI OSMesaContext APIENTRY OSMesaCreateContextExt(GLenum format, GLint depthBi
     std::fprintf(stderr, "libglfixed: OSMesaCreateContext: unsupported format 0x%x\n", format);
     return nullptr;
   }
-  osmesa_context* c =
-      new (std::nothrow) osmesa_context(f, depthBitsFor(depthBits, stencilBits), stencilBits > 0 ? 8 : 0);
+  osmesa_context* c = new (std::nothrow)
+      osmesa_context(format, f, depthBitsFor(depthBits, stencilBits), stencilBits > 0 ? 8 : 0);
   if (!c) return nullptr;
   c->context.requestedAccum = accumBits > 0;
   if (sharelist) c->context.shareObjectsWith(sharelist->context);
@@ -120,7 +137,8 @@ GLAPI OSMesaContext APIENTRY OSMesaCreateContextAttribs(const int* attribList, O
       case OSMESA_CONTEXT_MAJOR_VERSION: major = value; break;
       case OSMESA_CONTEXT_MINOR_VERSION: minor = value; break;
       default:
-        std::fprintf(stderr, "libglfixed: OSMesaCreateContextAttribs: unknown attribute 0x%x\n", attribList[i]);
+        std::fprintf(stderr, "libglfixed: OSMesaCreateContextAttribs: unknown attribute 0x%x\n",
+                     attribList[i]);
         return nullptr;
     }
   }
@@ -160,10 +178,14 @@ GLAPI GLboolean APIENTRY OSMesaMakeCurrent(OSMesaContext ctx, void* buffer, GLen
   if (!ctx || !buffer || width < 1 || height < 1 || width > glfixed::kMaxViewportSize ||
       height > glfixed::kMaxViewportSize)
     return GL_FALSE;
-  if (type != GL_UNSIGNED_BYTE) {
-    std::fprintf(stderr, "libglfixed: OSMesaMakeCurrent: only GL_UNSIGNED_BYTE buffers are supported\n");
+  PixelFormat bufferFormat;
+  if (!bufferFormatOf(ctx->osmesaFormat, type, &bufferFormat)) {
+    std::fprintf(stderr, "libglfixed: OSMesaMakeCurrent: unsupported format/type 0x%x/0x%x\n",
+                 ctx->osmesaFormat, type);
     return GL_FALSE;
   }
+  ctx->format = bufferFormat;
+  ctx->type = type;
   ctx->width = width;
   ctx->height = height;
   bindColorBuffer(*ctx, buffer);
@@ -196,12 +218,8 @@ GLAPI void APIENTRY OSMesaPixelStore(GLint pname, GLint value) {
       }
       c->userRowLength = value;
       break;
-    case OSMESA_Y_UP:
-      c->yUp = value != 0;
-      break;
-    default:
-      c->context.recordError(GL_INVALID_ENUM);
-      return;
+    case OSMESA_Y_UP: c->yUp = value != 0; break;
+    default: c->context.recordError(GL_INVALID_ENUM); return;
   }
   bindColorBuffer(*c, c->context.framebuffer.front.pixels);
 }
@@ -210,23 +228,24 @@ GLAPI void APIENTRY OSMesaGetIntegerv(GLint pname, GLint* value) {
   osmesa_context* c = OSMesaGetCurrentContext();
   if (!value) return;
   switch (pname) {
-    case OSMESA_MAX_WIDTH: case OSMESA_MAX_HEIGHT: *value = glfixed::kMaxViewportSize; return;
+    case OSMESA_MAX_WIDTH:
+    case OSMESA_MAX_HEIGHT: *value = glfixed::kMaxViewportSize; return;
     default: break;
   }
   if (!c) return;
   switch (pname) {
     case OSMESA_WIDTH: *value = c->width; return;
     case OSMESA_HEIGHT: *value = c->height; return;
-    case OSMESA_FORMAT: *value = static_cast<GLint>(osmesaFormatOf(c->format)); return;
-    case OSMESA_TYPE: *value = GL_UNSIGNED_BYTE; return;
+    case OSMESA_FORMAT: *value = static_cast<GLint>(c->osmesaFormat); return;
+    case OSMESA_TYPE: *value = static_cast<GLint>(c->type); return;
     case OSMESA_ROW_LENGTH: *value = c->userRowLength; return;
     case OSMESA_Y_UP: *value = c->yUp ? 1 : 0; return;
     default: c->context.recordError(GL_INVALID_ENUM); return;
   }
 }
 
-GLAPI GLboolean APIENTRY OSMesaGetDepthBuffer(OSMesaContext c, GLint* width, GLint* height, GLint* bytesPerValue,
-                                              void** buffer) {
+GLAPI GLboolean APIENTRY OSMesaGetDepthBuffer(OSMesaContext c, GLint* width, GLint* height,
+                                              GLint* bytesPerValue, void** buffer) {
   if (!c || c->context.framebuffer.depth.bits() == 0 || c->width == 0) {
     if (width) *width = 0;
     if (height) *height = 0;
@@ -255,7 +274,7 @@ GLAPI GLboolean APIENTRY OSMesaGetColorBuffer(OSMesaContext c, GLint* width, GLi
   glfixed::pipeline::flushVertices(c->context);
   if (width) *width = c->width;
   if (height) *height = c->height;
-  if (format) *format = static_cast<GLint>(osmesaFormatOf(c->format));
+  if (format) *format = static_cast<GLint>(c->osmesaFormat);
   if (buffer) *buffer = c->context.framebuffer.front.pixels;
   return GL_TRUE;
 }
@@ -264,8 +283,11 @@ GLAPI OSMESAproc APIENTRY OSMesaGetProcAddress(const char* funcName) {
   return reinterpret_cast<OSMESAproc>(glfixed::api::procAddress(funcName));
 }
 
-// Colours are always clamped in this fixed-function pipeline.
-GLAPI void APIENTRY OSMesaColorClamp(GLboolean enable) {}
+// Mesa's OSMesaColorClamp(GL_FALSE) asks for GL_CLAMP_FRAGMENT_COLOR
+// GL_FIXED_ONLY, which still clamps: its float buffers are not in float
+// mode (GL_RGBA_FLOAT_MODE is false), so fragment colours are clamped
+// either way (measured; MESA_FACTS.md, "OSMesa colour buffer types").
+GLAPI void APIENTRY OSMesaColorClamp(GLboolean enable) { (void)enable; }
 
 // Mesa's post-processing filters are not provided.
 GLAPI void APIENTRY OSMesaPostprocess(OSMesaContext osmesa, const char* filter, unsigned enableValue) {}

@@ -58,6 +58,8 @@ struct DepthBufferAttrib {
 // GL_COLOR_BUFFER_BIT.
 struct ColorBufferAttrib {
   glm::vec4 clearColor{0, 0, 0, 0};
+  // As glClearColor got it: OSMesa's float buffers are cleared to it unclamped.
+  glm::vec4 clearColorUnclamped{0, 0, 0, 0};
   bool dither = true;
   std::array<bool, 4> writeMask{true, true, true, true};
   bool alphaTest = false;  // the alpha test (fragment/alpha_test.inc)

@@ -16,6 +16,8 @@ static struct {
     int row_pixels;            /* pixels per row in the client buffer */
     int bpp;                   /* bytes per pixel of the client buffer */
     GLenum format;             /* format the scene asked for */
+    GLenum type;               /* buffer type: GL_UNSIGNED_BYTE (default), GL_UNSIGNED_SHORT, GL_FLOAT,
+                                  GL_UNSIGNED_SHORT_5_6_5 */
     GLenum ctx_format;         /* format given to OSMesa (differs: RGB emulation) */
     int rgb_via_rgba;          /* Mesa side of an RGB/BGR scene: rendered as RGBA (scene.c) */
     int y_up;                  /* orientation used to decode the buffer */
@@ -31,19 +33,75 @@ static void fail(const char *what)
     exit(2);
 }
 
+static int format_has_alpha(GLenum format)
+{
+    return format == OSMESA_RGBA || format == OSMESA_BGRA || format == OSMESA_ARGB;
+}
+
 static int format_bpp(GLenum format)
 {
     switch (format) {
     case OSMESA_RGBA: case OSMESA_BGRA: case OSMESA_ARGB: return 4;
     case OSMESA_RGB: case OSMESA_BGR: return 3;
+    case OSMESA_RGB_565: return 2;
     default: return 0;
     }
 }
 
-static int format_has_alpha(GLenum format)
+/* Bytes a pixel of (format, type): Mesa's 16-bit and float buffers have 4
+ * channels (3 for OSMESA_RGB) of 2 or 4 bytes. */
+static int buffer_bpp(GLenum format, GLenum type)
 {
-    return format == OSMESA_RGBA || format == OSMESA_BGRA || format == OSMESA_ARGB;
+    int channels = format == OSMESA_RGB || format == OSMESA_BGR ? 3 : 4;
+    switch (type) {
+    case GL_UNSIGNED_SHORT: return channels * 2;
+    case GL_FLOAT: return channels * 4;
+    case GL_UNSIGNED_SHORT_5_6_5: return 2;
+    default: return format_bpp(format);
+    }
 }
+
+/* The dump's sample kind (header field 10): "8" (bytes), "16" (16-bit unorm
+ * channels), "32f" (float channels), "565" (the 5-6-5 word's own channel
+ * values, 0..31 / 0..63, one byte each). glfx_compare counts differences in
+ * units of the kind's least significant bit (floats: units in the last place). */
+static const char *sample_kind(GLenum type)
+{
+    switch (type) {
+    case GL_UNSIGNED_SHORT: return "16";
+    case GL_FLOAT: return "32f";
+    case GL_UNSIGNED_SHORT_5_6_5: return "565";
+    default: return "8";
+    }
+}
+static int sample_bytes(GLenum type) { return type == GL_UNSIGNED_SHORT ? 2 : type == GL_FLOAT ? 4 : 1; }
+
+static GLenum g_buffer_type = GL_UNSIGNED_BYTE;
+void scene_set_buffer_type(GLenum type) { g_buffer_type = type; }
+
+/* One pixel of a 16-bit, float or 5-6-5 buffer as four samples of
+ * sample_bytes(type) (R, G, B, A: Mesa stores these types as RGBA whatever
+ * the OSMesa format; missing alpha as 1.0). */
+static void decode_wide_pixel(const unsigned char *p, unsigned char *out)
+{
+    int has_alpha = format_has_alpha(S.format), k;
+    if (S.type == GL_UNSIGNED_SHORT_5_6_5) {
+        unsigned short w;
+        memcpy(&w, p, 2);
+        out[0] = (unsigned char)(w >> 11); out[1] = (unsigned char)((w >> 5) & 63);
+        out[2] = (unsigned char)(w & 31); out[3] = 255;
+    } else if (S.type == GL_UNSIGNED_SHORT) {
+        unsigned short v[4] = {0, 0, 0, 65535};
+        memcpy(v, p, has_alpha ? 8 : 6);
+        memcpy(out, v, 8);
+    } else {
+        float v[4] = {0, 0, 0, 1.0f};
+        memcpy(v, p, has_alpha ? 16 : 12);
+        memcpy(out, v, 16);
+    }
+    (void)k;
+}
+
 
 /* Decode one client-buffer pixel into RGBA. */
 static void decode_pixel(const unsigned char *p, unsigned char out[4])
@@ -115,7 +173,8 @@ int scene_begin_try(int argc, char **argv, const scene_options *opts)
     S.format = opts->format ? opts->format : OSMESA_RGBA;
     if (!format_bpp(S.format)) fail("unsupported OSMesa format");
     S.ctx_format = S.format;
-    {
+    S.type = g_buffer_type;
+    if (S.type == GL_UNSIGNED_BYTE) {
         /* Mesa 22.3 llvmpipe corrupts OSMESA_RGB renderings and refuses
          * OSMESA_BGR at OSMesaMakeCurrent; on the Mesa side render RGBA and
          * present it in the 3-byte layout (GLFX_RGB_RAW=1 disables this). */
@@ -126,7 +185,7 @@ int scene_begin_try(int argc, char **argv, const scene_options *opts)
             S.ctx_format = OSMESA_RGBA;
         }
     }
-    S.bpp = format_bpp(S.ctx_format);
+    S.bpp = buffer_bpp(S.ctx_format, S.type);
     if (S.width <= 0 || S.height <= 0) fail("bad buffer size");
     S.row_pixels = opts->row_length > 0 ? opts->row_length : S.width;
     if (S.row_pixels < S.width) fail("row_length smaller than width");
@@ -143,7 +202,7 @@ int scene_begin_try(int argc, char **argv, const scene_options *opts)
         S.refused = "create";
         return -1;
     }
-    if (!OSMesaMakeCurrent(S.ctx, S.buffer, GL_UNSIGNED_BYTE, S.width, S.height)) {
+    if (!OSMesaMakeCurrent(S.ctx, S.buffer, S.type, S.width, S.height)) {
         S.refused = "makecurrent";
         return -1;
     }
@@ -259,7 +318,10 @@ static void close_output(FILE *f)
 
 void scene_readpixels_check(void)
 {
-    size_t row = (size_t)S.width * 4;
+    /* 16-bit and float buffers are read in their own type. */
+    GLenum rtype = S.type == GL_UNSIGNED_SHORT || S.type == GL_FLOAT ? S.type : GL_UNSIGNED_BYTE;
+    int sbytes = sample_bytes(rtype);
+    size_t row = (size_t)S.width * 4 * sbytes;
     unsigned char *px = (unsigned char *)malloc(row * S.height);
     FILE *f;
     size_t i;
@@ -268,10 +330,10 @@ void scene_readpixels_check(void)
     if (!px) fail("out of memory");
     memset(px, 0, row * S.height);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(0, 0, S.width, S.height, GL_RGBA, GL_UNSIGNED_BYTE, px);
+    glReadPixels(0, 0, S.width, S.height, GL_RGBA, rtype, px);
     f = open_output(".readpixels");
-    fprintf(f, "GLFX1 %d %d %d %d %d %d %u %d\n", S.width, S.height,
-            format_has_alpha(S.format) ? 4 : 3, 0, 0, 0, 0u, 0);
+    fprintf(f, "GLFX1 %d %d %d %d %d %d %u %d %s\n", S.width, S.height,
+            format_has_alpha(S.format) ? 4 : 3, 0, 0, 0, 0u, 0, sample_kind(rtype));
     write_info_line(f, 1);
     if (S.rgb_via_rgba)                          /* an RGB buffer reads alpha 1.0 */
         for (i = 0; i < (size_t)S.width * S.height; i++) px[i * 4 + 3] = 255;
@@ -286,20 +348,34 @@ static int end_refused(void)
 {
     static const unsigned char key[4] = {SCENE_KEY_R, SCENE_KEY_G, SCENE_KEY_B, SCENE_KEY_A};
     FILE *f = open_output(".glfx");
-    int i;
-    fprintf(f, "GLFX1 %d %d %d %d %d %d %u %d\n", S.width, S.height,
-            format_has_alpha(S.format) ? 4 : 3, 0, 0, 0, 0u, 0);
+    int i, k;
+    fprintf(f, "GLFX1 %d %d %d %d %d %d %u %d %s\n", S.width, S.height,
+            format_has_alpha(S.format) ? 4 : 3, 0, 0, 0, 0u, 0, sample_kind(S.type));
     write_info_line(f, 0);
     for (i = 0; i < S.width * S.height; i++) {
-        unsigned char px[4];
-        memcpy(px, key, 4);
-        if (!format_has_alpha(S.format)) px[3] = 255;
-        fwrite(px, 1, 4, f);
+        /* The KEY as each kind stores a clear to it (glfx_compare's key). */
+        for (k = 0; k < 4; k++) {
+            int a = k == 3 && !format_has_alpha(S.format);
+            float v = a ? 1.0f : key[k] / 255.0f;
+            if (S.type == GL_UNSIGNED_SHORT) {
+                unsigned short u = (unsigned short)(a ? 65535 : key[k] * 257);
+                fwrite(&u, 2, 1, f);
+            } else if (S.type == GL_FLOAT) {
+                fwrite(&v, 4, 1, f);
+            } else if (S.type == GL_UNSIGNED_SHORT_5_6_5) {
+                static const unsigned char key565[4] = {0, 1, 1, 255};
+                fwrite(&key565[k], 1, 1, f);
+            } else {
+                unsigned char b = a ? 255 : key[k];
+                fwrite(&b, 1, 1, f);
+            }
+        }
     }
     close_output(f);
     if (S.ctx) OSMesaDestroyContext(S.ctx);
     free(S.buffer);
     memset(&S, 0, sizeof S);
+    g_buffer_type = GL_UNSIGNED_BYTE;
     return 0;
 }
 
@@ -332,19 +408,26 @@ int scene_end(void)
     }
 
     f = open_output(".glfx");
-    fprintf(f, "GLFX1 %d %d %d %d %d %d %u %d\n", S.width, S.height,
+    fprintf(f, "GLFX1 %d %d %d %d %d %d %u %d %s\n", S.width, S.height,
             format_has_alpha(S.format) ? 4 : 3, (int)dw, (int)dh, (int)dbytes,
-            S.cleared_depth, guard_damage);
+            S.cleared_depth, guard_damage, sample_kind(S.type));
     write_info_line(f, 0);
 
-    rgba = (unsigned char *)malloc((size_t)S.width * 4);
-    if (!rgba) fail("out of memory");
-    for (y = 0; y < S.height; y++) {             /* output row 0 = top */
-        int src_row = S.y_up ? S.height - 1 - y : y;
-        const unsigned char *src = S.buffer + (size_t)src_row * row_bytes;
-        for (x = 0; x < S.width; x++)
-            decode_pixel(src + (size_t)x * S.bpp, rgba + (size_t)x * 4);
-        fwrite(rgba, 1, (size_t)S.width * 4, f);
+    {
+        size_t px_bytes = 4 * (size_t)(S.type == GL_UNSIGNED_BYTE ? 1 : sample_bytes(S.type));
+        rgba = (unsigned char *)malloc((size_t)S.width * px_bytes);
+        if (!rgba) fail("out of memory");
+        for (y = 0; y < S.height; y++) {             /* output row 0 = top */
+            int src_row = S.y_up ? S.height - 1 - y : y;
+            const unsigned char *src = S.buffer + (size_t)src_row * row_bytes;
+            for (x = 0; x < S.width; x++) {
+                if (S.type == GL_UNSIGNED_BYTE)
+                    decode_pixel(src + (size_t)x * S.bpp, rgba + (size_t)x * 4);
+                else
+                    decode_wide_pixel(src + (size_t)x * S.bpp, rgba + (size_t)x * px_bytes);
+            }
+            fwrite(rgba, 1, (size_t)S.width * px_bytes, f);
+        }
     }
     free(rgba);
 
@@ -358,5 +441,6 @@ int scene_end(void)
     OSMesaDestroyContext(S.ctx);
     free(S.buffer);
     memset(&S, 0, sizeof S);
+    g_buffer_type = GL_UNSIGNED_BYTE;
     return 0;
 }

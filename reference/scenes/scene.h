@@ -71,7 +71,8 @@ extern "C" {
 
 typedef struct {
     int width, height;     /* buffer size */
-    GLenum format;         /* OSMESA_RGBA (default when 0), OSMESA_BGRA, OSMESA_ARGB, OSMESA_RGB, OSMESA_BGR */
+    GLenum format;         /* OSMESA_RGBA (default when 0), OSMESA_BGRA, OSMESA_ARGB, OSMESA_RGB, OSMESA_BGR,
+                              OSMESA_RGB_565 (with scene_set_buffer_type(GL_UNSIGNED_SHORT_5_6_5)) */
     int depth_bits;        /* passed to OSMesaCreateContextExt; use 24 unless testing otherwise; -1 means default 24 */
     int y_up;              /* OSMESA_Y_UP value; default 1 (pass -1 for "don't call OSMesaPixelStore") */
     int row_length;        /* OSMESA_ROW_LENGTH in pixels, 0 = don't set */
@@ -80,6 +81,16 @@ typedef struct {
 /* The stencil bits the next scene_begin* asks OSMesaCreateContextExt for
  * (default 0: no stencil buffer). */
 void scene_set_stencil_bits(int bits);
+/* The type the next scene_begin* gives OSMesaMakeCurrent (default
+ * GL_UNSIGNED_BYTE): GL_UNSIGNED_SHORT or GL_FLOAT (16-bit unorm or float
+ * channels, stored R, G, B(, A) whatever the format), or
+ * GL_UNSIGNED_SHORT_5_6_5 with format OSMESA_RGB_565. The dump then holds the
+ * buffer's own values and glfx_compare counts differences in units of the
+ * format's least significant bit (16-bit: 1/65535; 5-6-5: 1/31 or 1/63;
+ * float: one unit in the last place); scene_readpixels_check reads 16-bit
+ * and float buffers as GL_UNSIGNED_SHORT and GL_FLOAT. The KEY is the clear
+ * to (3, 5, 7, 0)/255 in the buffer's precision (5-6-5: 0, 1, 1). */
+void scene_set_buffer_type(GLenum type);
 
 /* RGBA, 24-bit depth, y_up default. */
 void scene_begin(int argc, char **argv, int width, int height);

@@ -6,6 +6,7 @@
 #include "pipeline/draw.h"
 #include "raster/pixel_rect.h"
 #include "state/context.h"
+#include "state/framebuffer_binding.h"
 
 namespace glfixed::pipeline {
 
@@ -15,6 +16,7 @@ namespace {
 // from the same depth values for GL_FRONT_AND_BACK (§4.2.1; as drawBatch).
 template <typename Draw>
 void intoDrawBuffers(Context& ctx, Draw draw) {
+  if (ctx.objectBound()) refreshFramebuffer(ctx);  // the attachments as they are now
   Framebuffer& fb = ctx.framebuffer;
   if (!fb.drawsIntoBoth(ctx.colorBuffer.drawBuffer)) return draw(fb);
   const DepthBuffer depthBefore = fb.depth;

@@ -45,7 +45,7 @@ GLenum osmesaFormatOf(PixelFormat f) {
     case PixelFormat::kARGB: return OSMESA_ARGB;
     case PixelFormat::kRGB: return OSMESA_RGB;
     case PixelFormat::kBGR: return OSMESA_BGR;
-    case PixelFormat::kBGRX: break;  // a window's format, never OSMesa's
+    case PixelFormat::kBGRX: case PixelFormat::kRGBX: break;  // a window's or an FBO's format, never OSMesa's
   }
   return OSMESA_RGBA;
 }
@@ -65,7 +65,7 @@ int depthBitsFor(GLint depthBits, GLint stencilBits) {
 // Points the context's colour buffer at the client memory with the current
 // pixel-store settings.
 void bindColorBuffer(osmesa_context& c, void* buffer) {
-  glfixed::Framebuffer& fb = c.context.framebuffer;
+  glfixed::Framebuffer& fb = c.context.windowFramebuffer();
   glfixed::ColorBuffer& cb = fb.front;
   cb.setFormat(c.format);
   cb.pixels = static_cast<uint8_t*>(buffer);
@@ -77,7 +77,7 @@ void bindColorBuffer(osmesa_context& c, void* buffer) {
   fb.readFront = cb;
   fb.readBack = fb.back;
   fb.surface = fb.readSurface = nullptr;
-  fb.selectBuffers(c.context.colorBuffer.drawBuffer, c.context.pixelMode.readBuffer);
+  c.context.selectWindowBuffers();
 }
 
 }  // namespace
@@ -160,11 +160,11 @@ GLAPI GLboolean APIENTRY OSMesaMakeCurrent(OSMesaContext ctx, void* buffer, GLen
   ctx->width = width;
   ctx->height = height;
   bindColorBuffer(*ctx, buffer);
-  glfixed::DepthBuffer& depth = ctx->context.framebuffer.depth;
+  glfixed::DepthBuffer& depth = ctx->context.windowFramebuffer().depth;
   if (depth.width() != width || depth.height() != height || depth.bits() != ctx->context.requestedDepthBits ||
       depth.stencilBits() != ctx->context.requestedStencilBits)
     depth.resize(width, height, ctx->context.requestedDepthBits, ctx->context.requestedStencilBits);
-  glfixed::AccumBuffer& accum = ctx->context.framebuffer.accum;
+  glfixed::AccumBuffer& accum = ctx->context.windowFramebuffer().accum;
   if (accum.width() != width || accum.height() != height || accum.present() != ctx->context.requestedAccum)
     accum.resize(width, height, ctx->context.requestedAccum);
   ctx->context.sizeToFirstSurface(width, height, false);  // OSMesa buffers are single-buffered
@@ -196,7 +196,7 @@ GLAPI void APIENTRY OSMesaPixelStore(GLint pname, GLint value) {
       c->context.recordError(GL_INVALID_ENUM);
       return;
   }
-  bindColorBuffer(*c, c->context.framebuffer.front.pixels);
+  bindColorBuffer(*c, c->context.windowFramebuffer().front.pixels);
 }
 
 GLAPI void APIENTRY OSMesaGetIntegerv(GLint pname, GLint* value) {
@@ -220,7 +220,7 @@ GLAPI void APIENTRY OSMesaGetIntegerv(GLint pname, GLint* value) {
 
 GLAPI GLboolean APIENTRY OSMesaGetDepthBuffer(OSMesaContext c, GLint* width, GLint* height, GLint* bytesPerValue,
                                               void** buffer) {
-  if (!c || c->context.framebuffer.depth.bits() == 0 || c->width == 0) {
+  if (!c || c->context.windowFramebuffer().depth.bits() == 0 || c->width == 0) {
     if (width) *width = 0;
     if (height) *height = 0;
     if (bytesPerValue) *bytesPerValue = 0;
@@ -228,7 +228,7 @@ GLAPI GLboolean APIENTRY OSMesaGetDepthBuffer(OSMesaContext c, GLint* width, GLi
     return GL_FALSE;
   }
   glfixed::pipeline::flushVertices(c->context);
-  glfixed::DepthBuffer& d = c->context.framebuffer.depth;
+  glfixed::DepthBuffer& d = c->context.windowFramebuffer().depth;
   if (width) *width = d.width();
   if (height) *height = d.height();
   if (bytesPerValue) *bytesPerValue = d.bytesPerValue();
@@ -238,7 +238,7 @@ GLAPI GLboolean APIENTRY OSMesaGetDepthBuffer(OSMesaContext c, GLint* width, GLi
 
 GLAPI GLboolean APIENTRY OSMesaGetColorBuffer(OSMesaContext c, GLint* width, GLint* height, GLint* format,
                                               void** buffer) {
-  if (!c || !c->context.framebuffer.front.pixels) {
+  if (!c || !c->context.windowFramebuffer().front.pixels) {
     if (width) *width = 0;
     if (height) *height = 0;
     if (format) *format = 0;
@@ -249,7 +249,7 @@ GLAPI GLboolean APIENTRY OSMesaGetColorBuffer(OSMesaContext c, GLint* width, GLi
   if (width) *width = c->width;
   if (height) *height = c->height;
   if (format) *format = static_cast<GLint>(osmesaFormatOf(c->format));
-  if (buffer) *buffer = c->context.framebuffer.front.pixels;
+  if (buffer) *buffer = c->context.windowFramebuffer().front.pixels;
   return GL_TRUE;
 }
 

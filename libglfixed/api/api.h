@@ -8,6 +8,7 @@
 
 #include "pipeline/immediate_mode.h"
 #include "state/context.h"
+#include "state/framebuffer_binding.h"
 
 namespace glfixed::api {
 
@@ -33,9 +34,14 @@ inline Context* contextForSetter() { return contextForQuery(); }
 // For a command that draws, reads the framebuffer or always ends the run of
 // buffered glBegin/glEnd vertices in Mesa (matrix operations, glClear,
 // glReadPixels, glFlush): the same check, then the buffered vertices are drawn.
+// With a framebuffer object bound, its views are rebuilt here too
+// (state/framebuffer_binding.h).
 inline Context* contextFlushed() {
   Context* ctx = contextForQuery();
-  if (ctx) pipeline::flushVertices(*ctx);
+  if (ctx) {
+    pipeline::flushVertices(*ctx);
+    if (ctx->objectBound()) refreshFramebuffer(*ctx);
+  }
   return ctx;
 }
 

@@ -9,6 +9,7 @@
 #include <cstring>
 
 #include "api/entry_points.h"
+#include "api/framebuffer_object_commands.h"
 
 extern "C" {
 
@@ -310,6 +311,46 @@ const Alias kAliases[] = {
     GLFX_ALIAS(glStencilFuncSeparateATI),
     GLFX_ALIAS(glStencilOpSeparateATI),
     GLFX_ALIAS(glActiveStencilFaceEXT),
+
+    // Framebuffer objects (api/gl_framebuffer_object_api.cpp).
+    GLFX_ALIAS(glIsRenderbuffer),
+    GLFX_ALIAS(glBindRenderbuffer),
+    GLFX_ALIAS(glDeleteRenderbuffers),
+    GLFX_ALIAS(glGenRenderbuffers),
+    GLFX_ALIAS(glRenderbufferStorage),
+    GLFX_ALIAS(glRenderbufferStorageMultisample),
+    GLFX_ALIAS(glGetRenderbufferParameteriv),
+    GLFX_ALIAS(glIsFramebuffer),
+    GLFX_ALIAS(glBindFramebuffer),
+    GLFX_ALIAS(glDeleteFramebuffers),
+    GLFX_ALIAS(glGenFramebuffers),
+    GLFX_ALIAS(glCheckFramebufferStatus),
+    GLFX_ALIAS(glFramebufferTexture1D),
+    GLFX_ALIAS(glFramebufferTexture2D),
+    GLFX_ALIAS(glFramebufferTexture3D),
+    GLFX_ALIAS(glFramebufferRenderbuffer),
+    GLFX_ALIAS(glGetFramebufferAttachmentParameteriv),
+    GLFX_ALIAS(glIsRenderbufferEXT),
+    GLFX_ALIAS(glBindRenderbufferEXT),
+    GLFX_ALIAS(glDeleteRenderbuffersEXT),
+    GLFX_ALIAS(glGenRenderbuffersEXT),
+    GLFX_ALIAS(glRenderbufferStorageEXT),
+    GLFX_ALIAS(glRenderbufferStorageMultisampleEXT),
+    GLFX_ALIAS(glGetRenderbufferParameterivEXT),
+    GLFX_ALIAS(glIsFramebufferEXT),
+    GLFX_ALIAS(glBindFramebufferEXT),
+    GLFX_ALIAS(glDeleteFramebuffersEXT),
+    GLFX_ALIAS(glGenFramebuffersEXT),
+    GLFX_ALIAS(glCheckFramebufferStatusEXT),
+    GLFX_ALIAS(glFramebufferTexture1DEXT),
+    GLFX_ALIAS(glFramebufferTexture2DEXT),
+    GLFX_ALIAS(glFramebufferTexture3DEXT),
+    GLFX_ALIAS(glFramebufferRenderbufferEXT),
+    GLFX_ALIAS(glGetFramebufferAttachmentParameterivEXT),
+    GLFX_ALIAS(glFramebufferTextureLayer),
+    GLFX_ALIAS(glDrawBuffersARB),
+    GLFX_ALIAS(glBlitFramebuffer),
+    GLFX_ALIAS(glBlitFramebufferEXT),
 };
 #undef GLFX_ALIAS
 }  // namespace

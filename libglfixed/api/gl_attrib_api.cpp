@@ -1,6 +1,7 @@
 // The server attribute stack (GL 2.1 §6.1.14): glPushAttrib, glPopAttrib.
 // Plain functions of their arguments, so that a display list can call them.
 #include "api/api.h"
+#include "state/framebuffer_binding.h"
 #include "api/list_record.h"
 
 using namespace glfixed;
@@ -23,7 +24,8 @@ GLAPI void APIENTRY glPopAttrib(void) {
   if (!ctx) return;
   if (!ctx->attribStack.pop(*ctx)) return ctx->recordError(GL_STACK_UNDERFLOW);
   // The draw and read buffers may have been restored.
-  ctx->framebuffer.selectBuffers(ctx->colorBuffer.drawBuffer, ctx->pixelMode.readBuffer);
+  ctx->selectWindowBuffers();
+  refreshFramebuffer(*ctx);
 }
 
 }  // extern "C"

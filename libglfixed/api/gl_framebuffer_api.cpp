@@ -10,6 +10,7 @@
 #include "api/list_record.h"
 #include "framebuffer/read_pixels.h"
 #include "raster/depth.h"
+#include "state/framebuffer_binding.h"
 
 using namespace glfixed;
 
@@ -57,6 +58,8 @@ GLAPI void APIENTRY glClear(GLbitfield mask) {
     ctx->recordError(GL_INVALID_VALUE);
     return;
   }
+  // A framebuffer object: an incomplete one clears nothing (GL 3.0 §4.4.4).
+  if (ctx->objectBound() && !drawFramebufferComplete(*ctx)) return;
   Framebuffer& fb = ctx->framebuffer;
   if (!fb.hasSurface()) return;
   bool byQuad = false;
@@ -98,6 +101,7 @@ GLAPI void APIENTRY glReadPixels(GLint x, GLint y, GLsizei width, GLsizei height
     ctx->recordError(GL_INVALID_VALUE);
     return;
   }
+  if (ctx->objectBound() && !readFramebufferComplete(*ctx)) return;
   if (const GLuint name = ctx->pixelStore.pixelPackBufferBinding) {
     // GL 2.1 §4.3.5: `pixels` is an offset into the pixel pack buffer, and
     // the whole image must fit in it.
@@ -167,8 +171,22 @@ GLAPI void APIENTRY glPixelStoref(GLenum pname, GLfloat param) {
 // is kept as given (GL_BACK stays GL_BACK on a single-buffered surface).
 namespace {
 
+// With a framebuffer object bound (GL 3.0 §4.2.1): GL_NONE or one of its
+// colour attachments; any window buffer name, or an attachment past the
+// maximum, is GL_INVALID_OPERATION, anything else GL_INVALID_ENUM.
+bool objectBufferNameError(Context& ctx, GLenum buffer) {
+  using namespace fbo_enums;
+  if (buffer == GL_NONE || (buffer >= kColorAttachment0 && buffer < kColorAttachment0 + kMaxColorAttachments))
+    return false;
+  if (ctx.windowFramebuffer().buffersNamed(buffer, false) == Framebuffer::Buffers::kUnknown)
+    ctx.recordError(GL_INVALID_ENUM);
+  else
+    ctx.recordError(GL_INVALID_OPERATION);
+  return true;
+}
+
 bool colorBufferNameError(Context& ctx, GLenum buffer, bool forReading) {
-  switch (ctx.framebuffer.buffersNamed(buffer, forReading)) {
+  switch (ctx.windowFramebuffer().buffersNamed(buffer, forReading)) {
     case Framebuffer::Buffers::kUnknown: ctx.recordError(GL_INVALID_ENUM); return true;
     case Framebuffer::Buffers::kMissing: ctx.recordError(GL_INVALID_OPERATION); return true;
     default: return false;
@@ -180,18 +198,42 @@ bool colorBufferNameError(Context& ctx, GLenum buffer, bool forReading) {
 GLAPI void APIENTRY glDrawBuffer(GLenum buf) {
   if (api::compiled(&glDrawBuffer, buf)) return;
   Context* ctx = api::contextForSetter();
-  if (!ctx || colorBufferNameError(*ctx, buf, false)) return;
+  if (!ctx) return;
+  if (FramebufferObject* fb = drawFramebufferObject(*ctx)) {
+    if (objectBufferNameError(*ctx, buf)) return;
+    pipeline::flushVertices(*ctx);
+    pipeline::flushBitmapCache(*ctx);
+    ctx->markChanged(GL_COLOR_BUFFER_BIT, 0);
+    fb->drawBuffers.fill(GL_NONE);
+    fb->drawBuffers[0] = buf;
+    ctx->colorBuffer.drawBuffer = buf;
+    return refreshFramebuffer(*ctx);
+  }
+  if (colorBufferNameError(*ctx, buf, false)) return;
   if (ctx->colorBuffer.drawBuffer != buf) pipeline::flushBitmapCache(*ctx);  // into the old buffer
-  if (api::setState(*ctx, ctx->colorBuffer.drawBuffer, buf, GL_COLOR_BUFFER_BIT))
-    ctx->framebuffer.selectBuffers(ctx->colorBuffer.drawBuffer, ctx->pixelMode.readBuffer);
+  if (api::setState(*ctx, ctx->colorBuffer.drawBuffer, buf, GL_COLOR_BUFFER_BIT)) {
+    ctx->selectWindowBuffers();
+    refreshFramebuffer(*ctx);
+  }
 }
 
 GLAPI void APIENTRY glReadBuffer(GLenum src) {
   if (api::compiled(&glReadBuffer, src)) return;
   Context* ctx = api::contextForSetter();
-  if (!ctx || colorBufferNameError(*ctx, src, true)) return;
-  if (api::setState(*ctx, ctx->pixelMode.readBuffer, src, GL_PIXEL_MODE_BIT))
-    ctx->framebuffer.selectBuffers(ctx->colorBuffer.drawBuffer, ctx->pixelMode.readBuffer);
+  if (!ctx) return;
+  if (FramebufferObject* fb = readFramebufferObject(*ctx)) {
+    if (objectBufferNameError(*ctx, src)) return;
+    pipeline::flushVertices(*ctx);
+    ctx->markChanged(GL_PIXEL_MODE_BIT, 0);
+    fb->readBuffer = src;
+    ctx->pixelMode.readBuffer = src;
+    return refreshFramebuffer(*ctx);
+  }
+  if (colorBufferNameError(*ctx, src, true)) return;
+  if (api::setState(*ctx, ctx->pixelMode.readBuffer, src, GL_PIXEL_MODE_BIT)) {
+    ctx->selectWindowBuffers();
+    refreshFramebuffer(*ctx);
+  }
 }
 
 }  // extern "C"

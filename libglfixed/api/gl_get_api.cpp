@@ -5,6 +5,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "api/api.h"
+#include "state/framebuffer_binding.h"
 #include "api/gl_version.h"
 #include "state/vertex_array_queries.h"
 #include "state/capabilities.h"
@@ -168,9 +169,34 @@ bool queryHeldState(Context& ctx, GLenum pname, StateValue& out) {
 }
 
 // The core's own state. False: not one of its pnames.
+// Framebuffer objects (GL 3.0 table 6.31, 6.32; Mesa's limits).
+bool queryFramebufferObjects(Context& ctx, GLenum pname, StateValue& out) {
+  if (pname >= 0x8825 && pname < 0x8825 + kMaxColorAttachments) {  // GL_DRAW_BUFFERi
+    const int i = static_cast<int>(pname - 0x8825);
+    GLenum b = i == 0 ? ctx.colorBuffer.drawBuffer : GL_NONE;
+    if (const FramebufferObject* fb = drawFramebufferObject(ctx)) b = fb->drawBuffers[i];
+    out.set({double(b)});
+    return true;
+  }
+  switch (pname) {
+    case 0x8CA6: out.set({double(ctx.fbo.draw)}); return true;          // GL_(DRAW_)FRAMEBUFFER_BINDING
+    case 0x8CAA: out.set({double(ctx.fbo.read)}); return true;          // GL_READ_FRAMEBUFFER_BINDING
+    case 0x8CA7: out.set({double(ctx.fbo.renderbuffer)}); return true;  // GL_RENDERBUFFER_BINDING
+    case 0x84E8: out.set({double(kMaxRenderbufferSize)}); return true;  // GL_MAX_RENDERBUFFER_SIZE
+    case 0x8CDF: out.set({double(kMaxColorAttachments)}); return true;  // GL_MAX_COLOR_ATTACHMENTS
+    case 0x8824: out.set({double(kMaxColorAttachments)}); return true;  // GL_MAX_DRAW_BUFFERS
+    case 0x8D57: out.set({double(kMaxSamples)}); return true;           // GL_MAX_SAMPLES
+    default: return false;
+  }
+}
+
 bool queryCoreState(Context& ctx, GLenum pname, StateValue& out) {
+  if (ctx.objectBound()) refreshFramebuffer(ctx);
+  if (queryFramebufferObjects(ctx, pname, out)) return true;
   const Framebuffer& fb = ctx.framebuffer;
-  const bool hasAlpha = fb.front.alpha >= 0;
+  // A framebuffer object's colour bits are those of its draw buffer 0 (none: 0).
+  const double colorBits = ctx.fbo.draw && !fb.color.pixels ? 0.0 : 8.0;
+  const ColorBuffer& sized = ctx.fbo.draw ? fb.color : fb.front;
   switch (pname) {
     case GL_MATRIX_MODE: out.set({double(ctx.transform.matrixMode)}); return true;
     case GL_MODELVIEW_MATRIX: out.setMatrix(ctx.modelview.top()); return true;
@@ -257,11 +283,12 @@ bool queryCoreState(Context& ctx, GLenum pname, StateValue& out) {
     case GL_LINE_WIDTH_RANGE:
     case GL_ALIASED_LINE_WIDTH_RANGE: out.set({1.0, 255.0}); return true;
     case GL_LINE_WIDTH_GRANULARITY: out.set({double(0.1f)}); return true;
-    // OSMesa's 5-6-5, 16-bit and float buffers report their own sizes.
-    case GL_RED_BITS: out.set({double(fb.front.channelBits(0))}); return true;
-    case GL_GREEN_BITS: out.set({double(fb.front.channelBits(1))}); return true;
-    case GL_BLUE_BITS: out.set({double(fb.front.channelBits(2))}); return true;
-    case GL_ALPHA_BITS: out.set({hasAlpha ? double(fb.front.channelBits(3)) : 0.0}); return true;
+    // OSMesa's 5-6-5, 16-bit and float buffers report their own sizes; a
+    // framebuffer object those of its draw buffer 0 (none: 0).
+    case GL_RED_BITS: out.set({colorBits > 0 ? double(sized.channelBits(0)) : 0.0}); return true;
+    case GL_GREEN_BITS: out.set({colorBits > 0 ? double(sized.channelBits(1)) : 0.0}); return true;
+    case GL_BLUE_BITS: out.set({colorBits > 0 ? double(sized.channelBits(2)) : 0.0}); return true;
+    case GL_ALPHA_BITS: out.set({colorBits > 0 ? double(sized.channelBits(3)) : 0.0}); return true;
     case GL_DEPTH_BITS: out.set({double(fb.depth.bits())}); return true;
     case GL_STENCIL_BITS: out.set({double(fb.depth.stencilBits())}); return true;
     case GL_ACCUM_RED_BITS: case GL_ACCUM_GREEN_BITS: case GL_ACCUM_BLUE_BITS: case GL_ACCUM_ALPHA_BITS:

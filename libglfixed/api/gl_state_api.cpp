@@ -104,7 +104,7 @@ GLAPI void APIENTRY glViewport(GLint x, GLint y, GLsizei width, GLsizei height) 
   api::setState(*ctx, ctx->viewport, v, GL_VIEWPORT_BIT);
   // Where Mesa's X11 drivers look at the window's size again (drisw's
   // invalidate_on_gl_viewport): a resized window gets buffers of its size.
-  if (SurfaceHooks* surface = ctx->framebuffer.surface) {
+  if (SurfaceHooks* surface = ctx->framebuffer.surface) {  // null while an object is the draw framebuffer
     pipeline::flushVertices(*ctx);
     surface->viewportChanged();
   }
@@ -272,9 +272,9 @@ namespace {
 void flushToSurface() {
   Context* ctx = api::contextFlushed();
   if (ctx) pipeline::flushBitmapCache(*ctx);  // st_flush
-  if (!ctx || !ctx->framebuffer.surface) return;
-  const Framebuffer& fb = ctx->framebuffer;
-  const bool frontDrawn = fb.color.pixels == fb.front.pixels || fb.drawsIntoBoth(ctx->colorBuffer.drawBuffer);
+  if (!ctx || !ctx->windowFramebuffer().surface) return;
+  const Framebuffer& fb = ctx->windowFramebuffer();
+  const bool frontDrawn = fb.color.pixels == fb.front.pixels || fb.drawsIntoBoth(ctx->windowDrawBuffer());
   if (frontDrawn) fb.surface->frontBufferFlushed();
 }
 }  // namespace

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "api/api.h"
+#include "state/framebuffer_binding.h"
 #include "pipeline/pixel_rect.h"
 #include "api/list_record.h"
 #include "api/tex_image_common.h"
@@ -90,6 +91,7 @@ void copyTexImage(int dims, GLenum target, GLint level, GLenum internalFormat, G
   const int limit = maxSize(t.index) >> level;
   if (w < 0 || h < 0 || w > limit || h > limit) return ctx->recordError(GL_INVALID_VALUE);
   const bool depth = base == GL_DEPTH_COMPONENT;
+  if (ctx->objectBound() && !readFramebufferComplete(*ctx)) return;  // GL 3.0 §4.4.4
   if (!hasSourceBuffer(ctx->framebuffer, depth)) return ctx->recordError(GL_INVALID_OPERATION);
   // The stored format as for client data of the framebuffer's type.
   const texture::TexelFormat stored = texture::chooseTexelFormat(
@@ -121,6 +123,7 @@ void copyTexSubImage(int dims, GLenum target, GLint level, GLint xo, GLint yo, G
       int64_t(yo) + height > image.height || zo >= image.depth)
     return ctx->recordError(GL_INVALID_VALUE);
   const bool depth = texture::texelFormatInfo(image.format).baseFormat == GL_DEPTH_COMPONENT;
+  if (ctx->objectBound() && !readFramebufferComplete(*ctx)) return;  // GL 3.0 §4.4.4
   if (!hasSourceBuffer(ctx->framebuffer, depth)) return ctx->recordError(GL_INVALID_OPERATION);
   if (width == 0 || height == 0) return;
   copyInto(*ctx, image, xo, yo, zo, x, y, width, height);

@@ -4,6 +4,7 @@
 // images are api/gl_tex_image_api.cpp, the parameters
 // api/gl_tex_parameter_api.cpp.
 #include "api/api.h"
+#include "api/framebuffer_object_commands.h"
 #include "api/list_record.h"
 #include "texture/texture_objects.h"
 
@@ -73,6 +74,7 @@ GLAPI void APIENTRY glDeleteTextures(GLsizei n, const GLuint* textures) {
       }
     }
     pipeline::flushVertices(*ctx);  // the buffered vertices may sample it
+    api::textureDeleted(*ctx, name);  // framebuffer objects: detached from the bound ones
     ctx->textures->remove(name);
   }
 }

@@ -3,6 +3,7 @@
 #include <type_traits>
 
 #include "api/api.h"
+#include "state/framebuffer_binding.h"
 #include "api/list_record.h"
 #include "api/normalized.h"
 #include "pipeline/immediate_mode.h"
@@ -101,6 +102,9 @@ GLAPI void APIENTRY glBegin(GLenum mode) {
     ctx->recordError(GL_INVALID_ENUM);
     return;
   }
+  // An incomplete framebuffer object: Mesa refuses the glBegin (its
+  // _mesa_valid_prim_mode) with GL_INVALID_FRAMEBUFFER_OPERATION (probed).
+  if (ctx->objectBound() && !drawFramebufferComplete(*ctx)) return;
   ctx->insideBeginEnd = true;
   pipeline::beginPrimitive(*ctx, mode);
 }

@@ -52,6 +52,13 @@ void ColorBuffer::setFormat(PixelFormat f) {
       blue = 0;
       alpha = -1;
       break;
+    case PixelFormat::kRGBX:
+      bytesPerPixel = 4;
+      red = 0;
+      green = 1;
+      blue = 2;
+      alpha = -1;
+      break;
     case PixelFormat::kRGB565:
       bytesPerPixel = 2;
       red = 0;
@@ -248,34 +255,104 @@ void Framebuffer::selectBuffers(GLenum drawBuffer, GLenum readBuffer) {
   read = view(buffersNamed(readBuffer, true), readFront, readBack);
 }
 
+DepthBuffer& DepthBuffer::operator=(const DepthBuffer& o) {
+  if (this == &o) return *this;
+  bits_ = o.bits_;
+  stencilBits_ = o.stencilBits_;
+  width_ = o.width_;
+  height_ = o.height_;
+  isView_ = o.isView_;
+  if (isView_) {
+    own16_.clear();
+    own32_.clear();
+    own8_.clear();
+    d16_ = o.d16_;
+    d32_ = o.d32_;
+    s8_ = o.s8_;
+  } else {
+    own16_ = o.own16_;
+    own32_ = o.own32_;
+    own8_ = o.own8_;
+    pointAtOwnStorage();
+  }
+  return *this;
+}
+
+DepthBuffer& DepthBuffer::operator=(DepthBuffer&& o) noexcept {
+  if (this == &o) return *this;
+  bits_ = o.bits_;
+  stencilBits_ = o.stencilBits_;
+  width_ = o.width_;
+  height_ = o.height_;
+  isView_ = o.isView_;
+  own16_ = std::move(o.own16_);
+  own32_ = std::move(o.own32_);
+  own8_ = std::move(o.own8_);
+  if (isView_) {
+    d16_ = o.d16_;
+    d32_ = o.d32_;
+    s8_ = o.s8_;
+  } else {
+    pointAtOwnStorage();  // a moved vector keeps its memory
+  }
+  o.pointAtOwnStorage();
+  return *this;
+}
+
+void DepthBuffer::pointAtOwnStorage() {
+  d16_ = own16_.empty() ? nullptr : own16_.data();
+  d32_ = own32_.empty() ? nullptr : own32_.data();
+  s8_ = own8_.empty() ? nullptr : own8_.data();
+}
+
 void DepthBuffer::resize(int width, int height, int bits, int stencilBits) {
   bits_ = bits;
   stencilBits_ = stencilBits > 0 ? 8 : 0;
   width_ = width;
   height_ = height;
+  isView_ = false;
   size_t n = static_cast<size_t>(width) * height;
-  d16_.assign(bits == 16 ? n : 0, 0);
-  d32_.assign(bits == 24 ? n : 0, 0);
-  s8_.assign(stencilBits_ && bits == 0 ? n : 0, 0);
+  own16_.assign(bits == 16 ? n : 0, 0);
+  own32_.assign(bits == 24 ? n : 0, 0);
+  own8_.assign(stencilBits_ && bits == 0 ? n : 0, 0);
+  pointAtOwnStorage();
+}
+
+void DepthBuffer::view(int width, int height, int bits, int stencilBits, void* depth, uint8_t* stencil8) {
+  own16_.clear();
+  own32_.clear();
+  own8_.clear();
+  bits_ = bits;
+  stencilBits_ = stencilBits > 0 ? 8 : 0;
+  width_ = width;
+  height_ = height;
+  isView_ = true;
+  d16_ = bits == 16 ? static_cast<uint16_t*>(depth) : nullptr;
+  d32_ = bits == 24 ? static_cast<uint32_t*>(depth) : nullptr;
+  s8_ = stencilBits_ && bits == 0 ? stencil8 : nullptr;
 }
 
 void DepthBuffer::fill(uint32_t v) {
+  const size_t n = count();
+  if (bits_ == 0) return;
   if (bits_ == 16)
-    std::fill(d16_.begin(), d16_.end(), static_cast<uint16_t>(v));
+    std::fill(d16_, d16_ + n, static_cast<uint16_t>(v));
   else if (!packedStencil())
-    std::fill(d32_.begin(), d32_.end(), v);
+    std::fill(d32_, d32_ + n, v);
   else
-    for (uint32_t& w : d32_) w = (w & 0xff000000u) | (v & 0xffffffu);
+    for (size_t i = 0; i < n; ++i) d32_[i] = (d32_[i] & 0xff000000u) | (v & 0xffffffu);
 }
 
 void DepthBuffer::fillStencil(uint32_t v, uint32_t writeMask) {
   writeMask &= 0xffu;
   v &= writeMask;
+  const size_t n = count();
+  if (stencilBits_ == 0) return;
   if (packedStencil()) {
     const uint32_t keep = ~(writeMask << 24);
-    for (uint32_t& w : d32_) w = (w & keep) | (v << 24);
+    for (size_t i = 0; i < n; ++i) d32_[i] = (d32_[i] & keep) | (v << 24);
   } else {
-    for (uint8_t& s : s8_) s = static_cast<uint8_t>((s & ~writeMask) | v);
+    for (size_t i = 0; i < n; ++i) s8_[i] = static_cast<uint8_t>((s8_[i] & ~writeMask) | v);
   }
 }
 

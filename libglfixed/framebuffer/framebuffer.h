@@ -9,6 +9,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "framebuffer/accum_buffer.h"
@@ -29,6 +30,7 @@ enum class PixelFormat {
   kRGB,
   kBGR,
   kBGRX,
+  kRGBX,  // red, green, blue, an unused byte: the RGBX8 texels of an RGB texture or renderbuffer
   kRGB565,
   kRGBA16,
   kRGB16,
@@ -102,7 +104,22 @@ struct ColorBuffer {
 // as it is); without a depth buffer it is a buffer of bytes of its own.
 class DepthBuffer {
  public:
+  DepthBuffer() = default;
+  // A copy owns copies of the values; a copy of a view is a view of the same memory.
+  DepthBuffer(const DepthBuffer& o) { *this = o; }
+  DepthBuffer& operator=(const DepthBuffer& o);
+  DepthBuffer(DepthBuffer&& o) noexcept { *this = std::move(o); }
+  DepthBuffer& operator=(DepthBuffer&& o) noexcept;
   void resize(int width, int height, int bits, int stencilBits = 0);
+  // Framebuffer objects: a view of memory the buffer does not own (a
+  // renderbuffer's, a depth texture's level, or another DepthBuffer's), laid
+  // out as resize would make it: `depth` holds 2 (16 bits) or 4 bytes (24
+  // bits, the stencil in the top byte when packed) a value, `stencil8` one
+  // byte a value without depth; rows of `width` values from the bottom up.
+  void view(int width, int height, int bits, int stencilBits, void* depth, uint8_t* stencil8);
+  void viewOf(DepthBuffer& owner) {
+    view(owner.width_, owner.height_, owner.bits_, owner.stencilBits_, owner.data(), owner.stencil8());
+  }
   int bits() const { return bits_; }
   int stencilBits() const { return stencilBits_; }
   // The stencil is the top byte of the depth words (else, with stencil
@@ -112,8 +129,8 @@ class DepthBuffer {
   int height() const { return height_; }
   uint32_t maxValue() const { return bits_ == 16 ? 0xffffu : 0xffffffu; }
   int bytesPerValue() const { return bits_ == 16 ? 2 : 4; }
-  void* data() { return bits_ == 16 ? static_cast<void*>(d16_.data()) : static_cast<void*>(d32_.data()); }
-  uint8_t* stencil8() { return s8_.data(); }  // the stencil without depth: one byte a pixel
+  void* data() { return bits_ == 16 ? static_cast<void*>(d16_) : static_cast<void*>(d32_); }
+  uint8_t* stencil8() { return s8_; }  // the stencil without depth: one byte a pixel
   // The depth value (without the stencil byte).
   uint32_t get(int x, int y) const {
     size_t i = static_cast<size_t>(y) * width_ + x;
@@ -145,10 +162,16 @@ class DepthBuffer {
   void fillStencil(uint32_t v, uint32_t writeMask);  // stencil, keeping the depth
 
  private:
+  void pointAtOwnStorage();
+  size_t count() const { return static_cast<size_t>(width_) * height_; }
   int bits_ = 0, stencilBits_ = 0, width_ = 0, height_ = 0;
-  std::vector<uint16_t> d16_;
-  std::vector<uint32_t> d32_;
-  std::vector<uint8_t> s8_;
+  bool isView_ = false;
+  std::vector<uint16_t> own16_;
+  std::vector<uint32_t> own32_;
+  std::vector<uint8_t> own8_;
+  uint16_t* d16_ = nullptr;
+  uint32_t* d32_ = nullptr;
+  uint8_t* s8_ = nullptr;
 };
 
 // The window-system surface behind a framebuffer (platform/surface.h), told
@@ -177,11 +200,17 @@ struct Framebuffer {
   SurfaceHooks* surface = nullptr;      // the draw surface; null for OSMesa
   SurfaceHooks* readSurface = nullptr;  // the read surface
 
-  bool bound() const { return color.pixels != nullptr; }
-  bool hasSurface() const { return front.pixels != nullptr; }
+  // A complete framebuffer object is bound (state/framebuffer_binding.h):
+  // the views above are of its attachments, of objectWidth x objectHeight
+  // pixels; `color` may have no pixels (a depth-only object) and still be drawn.
+  bool object = false;
+  int objectWidth = 0, objectHeight = 0;
+
+  bool bound() const { return color.pixels != nullptr || object; }
+  bool hasSurface() const { return front.pixels != nullptr || object; }
   bool doubleBuffered() const { return back.pixels != nullptr; }
-  int width() const { return front.width; }
-  int height() const { return front.height; }
+  int width() const { return object ? objectWidth : front.width; }
+  int height() const { return object ? objectHeight : front.height; }
   // The buffers GL_FRONT, GL_BACK, GL_LEFT... name here, as Mesa resolves
   // them (buffers.c): on a single-buffered surface every back buffer is the
   // front one; GL_LEFT and GL_FRONT_AND_BACK draw into both buffers but read

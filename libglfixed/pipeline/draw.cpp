@@ -9,6 +9,7 @@
 #include "primitive/primitive.h"
 #include "primitive/select_feedback.h"
 #include "state/context.h"
+#include "state/framebuffer_binding.h"
 #include "vertex/lighting_matrix.h"
 #include "vertex/vertex_stage.h"
 
@@ -223,6 +224,9 @@ void drawBatch(Context& ctx, const VertexBatch& batch) {
 void drawBatch(Context& ctx, const VertexBatch& batch, primitive::PrimitiveState::Submission submission,
                bool colorIsVertexData, bool fetchedVertexOutside) {
   flushBitmapCache(ctx);  // Mesa's st_prepare_draw
+  // A framebuffer object: its attachments as they are now; an incomplete one
+  // draws nothing (GL 3.0 §4.4.4).
+  if (ctx.objectBound() && batch.size() != 0 && !drawFramebufferComplete(ctx)) return;
   if (!ctx.framebuffer.bound() || batch.size() == 0) return;
   const vertex::VertexState& vs = ctx.validate();
   static thread_local ShadedVertices shaded;  // reused: no allocation per batch

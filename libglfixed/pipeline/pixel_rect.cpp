@@ -10,6 +10,7 @@
 #include "state/context.h"
 #include "texture/internal_format.h"
 #include "texture/texture_image.h"
+#include "state/framebuffer_binding.h"
 
 namespace glfixed::pipeline {
 
@@ -19,6 +20,7 @@ namespace {
 // from the same depth values for GL_FRONT_AND_BACK (§4.2.1; as drawBatch).
 template <typename Draw>
 void intoDrawBuffers(Context& ctx, Draw draw) {
+  if (ctx.objectBound()) refreshFramebuffer(ctx);  // the attachments as they are now
   Framebuffer& fb = ctx.framebuffer;
   if (!fb.drawsIntoBoth(ctx.colorBuffer.drawBuffer)) return draw(fb);
   const DepthBuffer depthBefore = fb.depth;

@@ -83,7 +83,7 @@ int depthBitsFor(GLint depthBits, GLint stencilBits) {
 // Points the context's colour buffer at the client memory with the current
 // pixel-store settings.
 void bindColorBuffer(osmesa_context& c, void* buffer) {
-  glfixed::Framebuffer& fb = c.context.framebuffer;
+  glfixed::Framebuffer& fb = c.context.windowFramebuffer();
   glfixed::ColorBuffer& cb = fb.front;
   cb.setFormat(c.format);
   cb.pixels = static_cast<uint8_t*>(buffer);
@@ -95,7 +95,7 @@ void bindColorBuffer(osmesa_context& c, void* buffer) {
   fb.readFront = cb;
   fb.readBack = fb.back;
   fb.surface = fb.readSurface = nullptr;
-  fb.selectBuffers(c.context.colorBuffer.drawBuffer, c.context.pixelMode.readBuffer);
+  c.context.selectWindowBuffers();
 }
 
 }  // namespace
@@ -189,11 +189,11 @@ GLAPI GLboolean APIENTRY OSMesaMakeCurrent(OSMesaContext ctx, void* buffer, GLen
   ctx->width = width;
   ctx->height = height;
   bindColorBuffer(*ctx, buffer);
-  glfixed::DepthBuffer& depth = ctx->context.framebuffer.depth;
+  glfixed::DepthBuffer& depth = ctx->context.windowFramebuffer().depth;
   if (depth.width() != width || depth.height() != height || depth.bits() != ctx->context.requestedDepthBits ||
       depth.stencilBits() != ctx->context.requestedStencilBits)
     depth.resize(width, height, ctx->context.requestedDepthBits, ctx->context.requestedStencilBits);
-  glfixed::AccumBuffer& accum = ctx->context.framebuffer.accum;
+  glfixed::AccumBuffer& accum = ctx->context.windowFramebuffer().accum;
   if (accum.width() != width || accum.height() != height || accum.present() != ctx->context.requestedAccum)
     accum.resize(width, height, ctx->context.requestedAccum);
   ctx->context.sizeToFirstSurface(width, height, false);  // OSMesa buffers are single-buffered
@@ -221,7 +221,7 @@ GLAPI void APIENTRY OSMesaPixelStore(GLint pname, GLint value) {
     case OSMESA_Y_UP: c->yUp = value != 0; break;
     default: c->context.recordError(GL_INVALID_ENUM); return;
   }
-  bindColorBuffer(*c, c->context.framebuffer.front.pixels);
+  bindColorBuffer(*c, c->context.windowFramebuffer().front.pixels);
 }
 
 GLAPI void APIENTRY OSMesaGetIntegerv(GLint pname, GLint* value) {
@@ -246,7 +246,7 @@ GLAPI void APIENTRY OSMesaGetIntegerv(GLint pname, GLint* value) {
 
 GLAPI GLboolean APIENTRY OSMesaGetDepthBuffer(OSMesaContext c, GLint* width, GLint* height,
                                               GLint* bytesPerValue, void** buffer) {
-  if (!c || c->context.framebuffer.depth.bits() == 0 || c->width == 0) {
+  if (!c || c->context.windowFramebuffer().depth.bits() == 0 || c->width == 0) {
     if (width) *width = 0;
     if (height) *height = 0;
     if (bytesPerValue) *bytesPerValue = 0;
@@ -254,7 +254,7 @@ GLAPI GLboolean APIENTRY OSMesaGetDepthBuffer(OSMesaContext c, GLint* width, GLi
     return GL_FALSE;
   }
   glfixed::pipeline::flushVertices(c->context);
-  glfixed::DepthBuffer& d = c->context.framebuffer.depth;
+  glfixed::DepthBuffer& d = c->context.windowFramebuffer().depth;
   if (width) *width = d.width();
   if (height) *height = d.height();
   if (bytesPerValue) *bytesPerValue = d.bytesPerValue();
@@ -264,7 +264,7 @@ GLAPI GLboolean APIENTRY OSMesaGetDepthBuffer(OSMesaContext c, GLint* width, GLi
 
 GLAPI GLboolean APIENTRY OSMesaGetColorBuffer(OSMesaContext c, GLint* width, GLint* height, GLint* format,
                                               void** buffer) {
-  if (!c || !c->context.framebuffer.front.pixels) {
+  if (!c || !c->context.windowFramebuffer().front.pixels) {
     if (width) *width = 0;
     if (height) *height = 0;
     if (format) *format = 0;
@@ -275,7 +275,7 @@ GLAPI GLboolean APIENTRY OSMesaGetColorBuffer(OSMesaContext c, GLint* width, GLi
   if (width) *width = c->width;
   if (height) *height = c->height;
   if (format) *format = static_cast<GLint>(c->osmesaFormat);
-  if (buffer) *buffer = c->context.framebuffer.front.pixels;
+  if (buffer) *buffer = c->context.windowFramebuffer().front.pixels;
   return GL_TRUE;
 }
 

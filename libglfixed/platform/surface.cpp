@@ -19,7 +19,7 @@ namespace {
 // same size again when made current on the same window) but no pointer
 // into a surface that may be gone by then.
 void unbindSurfaces(Context& ctx) {
-  Framebuffer& fb = ctx.framebuffer;
+  Framebuffer& fb = ctx.windowFramebuffer();
   fb.surface = fb.readSurface = nullptr;
   fb.front = fb.back = fb.readFront = fb.readBack = fb.color = fb.read = ColorBuffer{};
 }
@@ -69,8 +69,8 @@ void Surface::swapBuffers() {
 
 void Surface::rebindAttached() {
   for (Context* ctx : attached_)
-    bindSurfaces(*ctx, dynamic_cast<Surface*>(ctx->framebuffer.surface),
-                 dynamic_cast<Surface*>(ctx->framebuffer.readSurface));
+    bindSurfaces(*ctx, dynamic_cast<Surface*>(ctx->windowFramebuffer().surface),
+                 dynamic_cast<Surface*>(ctx->windowFramebuffer().readSurface));
 }
 
 void Surface::checkWindowSize() {
@@ -94,7 +94,7 @@ void Surface::detach(Context* ctx) {
 }
 
 void bindSurfaces(Context& ctx, Surface* draw, Surface* read) {
-  Framebuffer& fb = ctx.framebuffer;
+  Framebuffer& fb = ctx.windowFramebuffer();
   fb.surface = draw;
   fb.readSurface = read;
   fb.front = draw ? draw->frontView() : ColorBuffer{};
@@ -110,14 +110,14 @@ void bindSurfaces(Context& ctx, Surface* draw, Surface* read) {
   if (draw && (fb.accum.width() != draw->width() || fb.accum.height() != draw->height() ||
                fb.accum.present() != ctx.requestedAccum))
     fb.accum.resize(draw->width(), draw->height(), ctx.requestedAccum);
-  fb.selectBuffers(ctx.colorBuffer.drawBuffer, ctx.pixelMode.readBuffer);
+  ctx.selectWindowBuffers();
 }
 
 namespace {
 
 void detachAll(Context& ctx) {
-  if (auto* s = dynamic_cast<Surface*>(ctx.framebuffer.surface)) s->detach(&ctx);
-  if (auto* s = dynamic_cast<Surface*>(ctx.framebuffer.readSurface)) s->detach(&ctx);
+  if (auto* s = dynamic_cast<Surface*>(ctx.windowFramebuffer().surface)) s->detach(&ctx);
+  if (auto* s = dynamic_cast<Surface*>(ctx.windowFramebuffer().readSurface)) s->detach(&ctx);
 }
 
 }  // namespace
@@ -128,7 +128,7 @@ void makeCurrent(Context* ctx, Surface* draw, Surface* read) {
     pipeline::flushVertices(*previous);
     if (previous != ctx) pipeline::flushBitmapCache(*previous);  // _mesa_make_current flushes the old context
     // The previous context lets go of its surfaces (an OSMesa context has none).
-    if (previous != ctx && (previous->framebuffer.surface || previous->framebuffer.readSurface)) {
+    if (previous != ctx && (previous->windowFramebuffer().surface || previous->windowFramebuffer().readSurface)) {
       detachAll(*previous);
       unbindSurfaces(*previous);
     }

@@ -20,6 +20,7 @@
 #include "state/diagnostics.h"
 #include "state/dirty.h"
 #include "state/eval_attrib.h"
+#include "state/framebuffer_objects.h"
 #include "state/lighting_attrib.h"
 #include "state/list_attrib.h"
 #include "state/matrix_stack.h"
@@ -90,7 +91,31 @@ class Context {
   RasterPosState rasterPos;    // glRasterPos (§2.13); belongs to GL_CURRENT_BIT
   RenderModeState renderMode;  // glRenderMode, selection, feedback (§5.2, §5.3)
 
+  // What the stages draw into and read from: the window system's
+  // framebuffer, or, while a framebuffer object is bound (draw or read),
+  // views of the objects' attachments (and of the window's buffers for the
+  // other binding if it is 0), rebuilt before every use by
+  // refreshFramebuffer (state/framebuffer_binding.h). The window's own
+  // buffers are then parked in parkedWindow; the platform layer reaches them
+  // through windowFramebuffer() either way.
   Framebuffer framebuffer;
+  Framebuffer parkedWindow;
+  // Framebuffer and renderbuffer objects: shared as textures are.
+  std::shared_ptr<FramebufferObjects> framebufferObjects = std::make_shared<FramebufferObjects>();
+  struct FramebufferBindings {
+    GLuint draw = 0, read = 0, renderbuffer = 0;
+    // The window's draw and read buffers while an object holds the binding
+    // (the object's own are in ctx.colorBuffer.drawBuffer / pixelMode.readBuffer).
+    GLenum windowDrawBuffer = GL_FRONT, windowReadBuffer = GL_FRONT;
+    // The bound objects' status at the last refreshFramebuffer.
+    GLenum drawStatus = 0x8CD5, readStatus = 0x8CD5;
+  } fbo;
+  bool objectBound() const { return fbo.draw != 0 || fbo.read != 0; }
+  Framebuffer& windowFramebuffer() { return objectBound() ? parkedWindow : framebuffer; }
+  GLenum windowDrawBuffer() const { return fbo.draw ? fbo.windowDrawBuffer : colorBuffer.drawBuffer; }
+  GLenum windowReadBuffer() const { return fbo.read ? fbo.windowReadBuffer : pixelMode.readBuffer; }
+  // Points the window framebuffer's draw and read views at the buffers GL state names.
+  void selectWindowBuffers() { windowFramebuffer().selectBuffers(windowDrawBuffer(), windowReadBuffer()); }
   int requestedDepthBits;
   int requestedStencilBits;  // 0 or 8: the stencil buffer (framebuffer/framebuffer.h)
   // An accumulation buffer (OSMesaCreateContextExt's accumBits > 0); Mesa's
@@ -105,7 +130,9 @@ class Context {
     viewport.width = scissor.width = width;
     viewport.height = scissor.height = height;
     viewportInitialized = true;
-    colorBuffer.drawBuffer = pixelMode.readBuffer = doubleBuffered ? GL_BACK : GL_FRONT;
+    const GLenum initial = doubleBuffered ? GL_BACK : GL_FRONT;
+    (fbo.draw ? fbo.windowDrawBuffer : colorBuffer.drawBuffer) = initial;
+    (fbo.read ? fbo.windowReadBuffer : pixelMode.readBuffer) = initial;
   }
 
   // Between glBegin and glEnd (GL 2.1 §2.6.3).
@@ -161,6 +188,7 @@ class Context {
   void shareObjectsWith(Context& other) {
     displayLists.shareWith(other.displayLists);
     textures = other.textures;
+    framebufferObjects = other.framebufferObjects;
   }
 
   // Errors (GL 2.1 §2.5): the first error is kept until glGetError reads it.

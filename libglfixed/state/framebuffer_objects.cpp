@@ -1,0 +1,296 @@
+#include "state/framebuffer_objects.h"
+
+#include <algorithm>
+
+namespace glfixed {
+
+using namespace fbo_enums;
+
+namespace {
+
+RenderbufferFormat colorFormat(int r, int g, int b, int a, bool drawable = false) {
+  RenderbufferFormat f;
+  f.kind = RenderbufferFormat::Kind::kColor;
+  f.red = r;
+  f.green = g;
+  f.blue = b;
+  f.alpha = a;
+  f.drawable = drawable;
+  f.bytesPerPixel = 4;
+  return f;
+}
+
+}  // namespace
+
+// The sizes are Mesa's for llvmpipe's chosen pipe formats (probed); the
+// luminance and intensity formats get no format there (all sizes 0).
+bool renderbufferFormat(GLenum internalFormat, RenderbufferFormat* out) {
+  using Kind = RenderbufferFormat::Kind;
+  RenderbufferFormat f;
+  switch (internalFormat) {
+    case GL_RGBA: case GL_RGBA8: f = colorFormat(8, 8, 8, 8, true); break;
+    case GL_RGB: case GL_RGB8: f = colorFormat(8, 8, 8, 0, true); break;
+    case GL_RGBA2: case GL_RGBA4: f = colorFormat(4, 4, 4, 4); break;
+    case GL_RGB5_A1: f = colorFormat(5, 5, 5, 1); break;
+    case 0x8D62: f = colorFormat(5, 6, 5, 0); break;  // GL_RGB565
+    case GL_R3_G3_B2: case GL_RGB4: case GL_RGB5: f = colorFormat(5, 6, 5, 0); break;
+    case GL_RGB10: f = colorFormat(10, 10, 10, 0); break;
+    case GL_RGB10_A2: f = colorFormat(10, 10, 10, 2); break;
+    case GL_RGBA12: case GL_RGBA16: f = colorFormat(16, 16, 16, 16); break;
+    case GL_RGB12: case GL_RGB16: f = colorFormat(16, 16, 16, 0); break;
+    case GL_ALPHA: case GL_ALPHA4: case GL_ALPHA8: f = colorFormat(0, 0, 0, 8); break;
+    case GL_ALPHA12: case GL_ALPHA16: f = colorFormat(0, 0, 0, 16); break;
+    case 0x8229: f = colorFormat(8, 0, 0, 0); break;  // GL_R8
+    case 0x822B: f = colorFormat(8, 8, 0, 0); break;  // GL_RG8
+    case 0x8C43: case 0x8C42: f = colorFormat(8, 8, 8, 8); break;  // GL_SRGB8_ALPHA8, GL_SRGB_ALPHA
+    case 0x8814: f = colorFormat(32, 32, 32, 32); break;  // GL_RGBA32F
+    case 0x881A: f = colorFormat(16, 16, 16, 16); break;  // GL_RGBA16F
+    case GL_LUMINANCE: case GL_LUMINANCE4: case GL_LUMINANCE8: case GL_LUMINANCE12: case GL_LUMINANCE16:
+    case GL_LUMINANCE_ALPHA: case GL_LUMINANCE4_ALPHA4: case GL_LUMINANCE6_ALPHA2: case GL_LUMINANCE8_ALPHA8:
+    case GL_LUMINANCE12_ALPHA4: case GL_LUMINANCE12_ALPHA12: case GL_LUMINANCE16_ALPHA16:
+    case GL_INTENSITY: case GL_INTENSITY4: case GL_INTENSITY8: case GL_INTENSITY12: case GL_INTENSITY16:
+      f = colorFormat(0, 0, 0, 0);
+      break;
+    case GL_DEPTH_COMPONENT: case GL_DEPTH_COMPONENT24:
+      f.kind = Kind::kDepth; f.depth = 24; f.drawable = true; f.bytesPerPixel = 4;  // Z24X8
+      break;
+    case GL_DEPTH_COMPONENT16:
+      f.kind = Kind::kDepth; f.depth = 16; f.drawable = true; f.bytesPerPixel = 2;
+      break;
+    case GL_DEPTH_COMPONENT32:
+    case 0x8CAC:  // GL_DEPTH_COMPONENT32F
+      f.kind = Kind::kDepth; f.depth = 32; f.bytesPerPixel = 4;
+      break;
+    case GL_STENCIL_INDEX: case 0x8D46: case 0x8D47: case 0x8D48: case 0x8D49:  // STENCIL_INDEX1/4/8/16
+      f.kind = Kind::kStencil; f.stencil = 8; f.drawable = true; f.bytesPerPixel = 1;
+      break;
+    case 0x84F9: case 0x88F0:  // GL_DEPTH_STENCIL, GL_DEPTH24_STENCIL8
+      f.kind = Kind::kDepthStencil; f.depth = 24; f.stencil = 8; f.drawable = true; f.bytesPerPixel = 4;
+      break;
+    default: return false;
+  }
+  *out = f;
+  return true;
+}
+
+Attachment* FramebufferObject::attachment(GLenum point) {
+  if (point >= kColorAttachment0 && point < kColorAttachment0 + kMaxColorAttachments)
+    return &color[point - kColorAttachment0];
+  if (point == kDepthAttachment) return &depth;
+  if (point == kStencilAttachment) return &stencil;
+  return nullptr;
+}
+
+// Mesa's hash tables hand out the names after the highest one ever used
+// (probed: with 5 and 6 bound, glGenFramebuffers gives 7).
+void FramebufferObjects::generateFramebuffers(GLsizei n, GLuint* names) {
+  for (GLsizei i = 0; i < n; ++i) {
+    names[i] = ++maxFramebufferName_;
+    reservedFramebuffers_.insert(names[i]);
+  }
+}
+
+void FramebufferObjects::generateRenderbuffers(GLsizei n, GLuint* names) {
+  for (GLsizei i = 0; i < n; ++i) {
+    names[i] = ++maxRenderbufferName_;
+    reservedRenderbuffers_.insert(names[i]);
+  }
+}
+
+FramebufferObject* FramebufferObjects::obtainFramebuffer(GLuint name) {
+  if (name == 0) return nullptr;
+  std::unique_ptr<FramebufferObject>& p = framebuffers_[name];
+  if (!p) {
+    p = std::make_unique<FramebufferObject>();
+    p->name = name;
+    reservedFramebuffers_.erase(name);
+    maxFramebufferName_ = std::max(maxFramebufferName_, name);
+  }
+  return p.get();
+}
+
+Renderbuffer* FramebufferObjects::obtainRenderbuffer(GLuint name) {
+  if (name == 0) return nullptr;
+  std::unique_ptr<Renderbuffer>& p = renderbuffers_[name];
+  if (!p) {
+    p = std::make_unique<Renderbuffer>();
+    p->name = name;
+    reservedRenderbuffers_.erase(name);
+    maxRenderbufferName_ = std::max(maxRenderbufferName_, name);
+  }
+  return p.get();
+}
+
+FramebufferObject* FramebufferObjects::findFramebuffer(GLuint name) {
+  auto it = framebuffers_.find(name);
+  return it == framebuffers_.end() ? nullptr : it->second.get();
+}
+
+Renderbuffer* FramebufferObjects::findRenderbuffer(GLuint name) {
+  auto it = renderbuffers_.find(name);
+  return it == renderbuffers_.end() ? nullptr : it->second.get();
+}
+
+void FramebufferObjects::removeFramebuffer(GLuint name) {
+  framebuffers_.erase(name);
+  reservedFramebuffers_.erase(name);
+}
+
+void FramebufferObjects::removeRenderbuffer(GLuint name) {
+  renderbuffers_.erase(name);
+  reservedRenderbuffers_.erase(name);
+}
+
+texture::TextureImage* attachedImage(const Attachment& a, texture::TextureObjects& textures) {
+  if (a.type != GL_TEXTURE) return nullptr;
+  texture::TextureObject* t = textures.find(a.name);
+  if (!t || a.level < 0 || a.level >= texture::kMaxTextureLevels) return nullptr;
+  int face = 0;
+  if (a.textarget >= GL_TEXTURE_CUBE_MAP_POSITIVE_X && a.textarget <= GL_TEXTURE_CUBE_MAP_POSITIVE_X + 5)
+    face = static_cast<int>(a.textarget - GL_TEXTURE_CUBE_MAP_POSITIVE_X);
+  return &t->face[face][a.level];
+}
+
+namespace {
+
+enum class Point { kColor, kDepth, kStencil };
+
+bool isDepthTexel(texture::TexelFormat f) {
+  return f == texture::TexelFormat::Z16 || f == texture::TexelFormat::Z24 || f == texture::TexelFormat::Z32;
+}
+
+// Mesa's test_attachment_completeness, and whether this library draws into it.
+GLenum attachmentStatus(const Attachment& a, Point point, FramebufferObjects& objects,
+                        texture::TextureObjects& textures, int* w, int* h, bool* drawable) {
+  using Kind = RenderbufferFormat::Kind;
+  if (a.type == GL_TEXTURE) {
+    const texture::TextureImage* image = attachedImage(a, textures);
+    if (!image || !image->defined()) return kIncompleteAttachment;
+    if (a.layer >= image->depth) return kIncompleteAttachment;
+    const bool depthFormat = isDepthTexel(image->format);
+    switch (point) {
+      case Point::kColor:
+        if (depthFormat) return kIncompleteAttachment;
+        *drawable = image->format == texture::TexelFormat::RGBA8 || image->format == texture::TexelFormat::RGBX8;
+        break;
+      case Point::kDepth:
+        if (!depthFormat) return kIncompleteAttachment;
+        *drawable = image->format != texture::TexelFormat::Z32;
+        break;
+      case Point::kStencil: return kIncompleteAttachment;  // no depth-stencil textures here
+    }
+    *w = image->width;
+    *h = image->height;
+    return kComplete;
+  }
+  const Renderbuffer* rb = objects.findRenderbuffer(a.name);
+  if (!rb || rb->width < 1 || rb->height < 1) return kIncompleteAttachment;
+  const Kind k = rb->format.kind;
+  const bool ok = point == Point::kColor   ? k == Kind::kColor
+                  : point == Point::kDepth ? (k == Kind::kDepth || k == Kind::kDepthStencil)
+                                           : (k == Kind::kStencil || k == Kind::kDepthStencil);
+  if (!ok) return kIncompleteAttachment;
+  *drawable = rb->format.drawable && rb->samples == 0;
+  *w = rb->width;
+  *h = rb->height;
+  return kComplete;
+}
+
+}  // namespace
+
+GLenum framebufferStatus(FramebufferObject& fb, FramebufferObjects& objects, texture::TextureObjects& textures,
+                         int* width, int* height) {
+  int minW = 1 << 30, minH = 1 << 30, images = 0;
+  bool allDrawable = true;
+  auto test = [&](const Attachment& a, Point p) -> GLenum {
+    if (a.type == GL_NONE) return kComplete;
+    int w = 0, h = 0;
+    bool drawable = false;
+    const GLenum s = attachmentStatus(a, p, objects, textures, &w, &h, &drawable);
+    if (s != kComplete) return s;
+    ++images;
+    minW = std::min(minW, w);
+    minH = std::min(minH, h);
+    allDrawable = allDrawable && drawable;
+    return kComplete;
+  };
+  // Mesa's order: depth, stencil, then the colour attachments.
+  if (GLenum s = test(fb.depth, Point::kDepth); s != kComplete) return s;
+  if (GLenum s = test(fb.stencil, Point::kStencil); s != kComplete) return s;
+  for (const Attachment& a : fb.color)
+    if (GLenum s = test(a, Point::kColor); s != kComplete) return s;
+  if (images == 0) return kIncompleteMissingAttachment;
+  // llvmpipe's state tracker (st_validate_framebuffer): depth and stencil
+  // must be one buffer when both are attached.
+  if (fb.depth.type != GL_NONE && fb.stencil.type != GL_NONE && !(fb.depth == fb.stencil)) return kUnsupported;
+  if (!allDrawable) return kUnsupported;  // formats this library does not draw into
+  *width = minW;
+  *height = minH;
+  return kComplete;
+}
+
+bool colorView(const Attachment& a, FramebufferObjects& objects, texture::TextureObjects& textures,
+               ColorBuffer* out) {
+  ColorBuffer c;
+  if (a.type == GL_TEXTURE) {
+    texture::TextureImage* image = attachedImage(a, textures);
+    if (!image || !image->defined() || a.layer >= image->depth) return false;
+    if (image->format == texture::TexelFormat::RGBA8)
+      c.setFormat(PixelFormat::kRGBA);
+    else if (image->format == texture::TexelFormat::RGBX8)
+      c.setFormat(PixelFormat::kRGBX);
+    else
+      return false;
+    c.pixels = image->texels.data() + static_cast<size_t>(a.layer) * image->imageStride;
+    c.width = image->width;
+    c.height = image->height;
+  } else if (a.type == kRenderbuffer) {
+    Renderbuffer* rb = objects.findRenderbuffer(a.name);
+    if (!rb || rb->format.kind != RenderbufferFormat::Kind::kColor || !rb->format.drawable || rb->width < 1)
+      return false;
+    c.setFormat(rb->format.alpha > 0 ? PixelFormat::kRGBA : PixelFormat::kRGBX);
+    c.pixels = rb->storage.data();
+    c.width = rb->width;
+    c.height = rb->height;
+  } else {
+    return false;
+  }
+  c.rowLength = c.width;
+  c.yUp = true;
+  *out = c;
+  return true;
+}
+
+void depthView(const FramebufferObject& fb, FramebufferObjects& objects, texture::TextureObjects& textures,
+               DepthBuffer* out) {
+  *out = DepthBuffer{};
+  auto rbOf = [&](const Attachment& a) -> Renderbuffer* {
+    return a.type == kRenderbuffer ? objects.findRenderbuffer(a.name) : nullptr;
+  };
+  if (fb.depth.type == GL_TEXTURE) {
+    texture::TextureImage* image = attachedImage(fb.depth, textures);
+    if (!image || !image->defined() || fb.depth.layer >= image->depth) return;
+    const int bits = image->format == texture::TexelFormat::Z16 ? 16
+                     : image->format == texture::TexelFormat::Z24 ? 24 : 0;
+    if (bits == 0) return;
+    out->view(image->width, image->height, bits, 0,
+              image->texels.data() + static_cast<size_t>(fb.depth.layer) * image->imageStride, nullptr);
+    return;
+  }
+  Renderbuffer* depth = rbOf(fb.depth);
+  Renderbuffer* stencil = rbOf(fb.stencil);
+  if (depth && depth->width > 0 && depth->format.drawable) {
+    const bool packed = depth->format.kind == RenderbufferFormat::Kind::kDepthStencil;
+    out->view(depth->width, depth->height, depth->format.depth, packed && stencil == depth ? 8 : 0,
+              depth->storage.data(), nullptr);
+    return;
+  }
+  if (stencil && stencil->width > 0 && stencil->format.drawable) {
+    if (stencil->format.kind == RenderbufferFormat::Kind::kDepthStencil)
+      out->view(stencil->width, stencil->height, 24, 8, stencil->storage.data(), nullptr);
+    else
+      out->view(stencil->width, stencil->height, 0, 8, nullptr, stencil->storage.data());
+  }
+}
+
+}  // namespace glfixed

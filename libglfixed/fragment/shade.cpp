@@ -26,6 +26,7 @@ namespace generic {
 #include "fragment/alpha_test.inc"
 #include "fragment/blend.inc"
 #include "fragment/block_shader.inc"
+#include "fragment/depth_image.inc"
 #undef GLFIXED_BLOCK_AVX2
 }  // namespace generic
 
@@ -36,6 +37,7 @@ namespace avx2 {
 #include "fragment/alpha_test.inc"
 #include "fragment/blend.inc"
 #include "fragment/block_shader.inc"
+#include "fragment/depth_image.inc"
 #undef GLFIXED_BLOCK_AVX2
 }  // namespace avx2
 #pragma GCC pop_options
@@ -105,6 +107,7 @@ ShadeTarget makeShadeTarget(const raster::RasterState& state, Framebuffer& fb,
   s.textures = state.textures && state.textures->unitCount > 0 ? state.textures : nullptr;
   s.blend = state.blend;
   s.alphaTest = state.alphaTest;
+  s.depthImage = state.depthImage;
   // The alpha test can discard after the colour: llvmpipe then tests depth late.
   if (s.alphaTest.active()) s.lateDepth = true;
   return s;

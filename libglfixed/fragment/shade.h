@@ -10,6 +10,7 @@
 
 #include "fragment/alpha_test_state.h"
 #include "fragment/blend_state.h"
+#include "fragment/depth_image_state.h"
 #include "fragment/stencil_state.h"
 #include "framebuffer/framebuffer.h"
 #include "raster/primitive_setup.h"
@@ -50,6 +51,8 @@ struct ShadeTarget {
   const TextureStage* textures = nullptr;
   // Blending or the logic op (GL 2.1 §4.1.8, §4.1.10), before the colour mask.
   BlendState blend;
+  // glDrawPixels(GL_DEPTH_COMPONENT): the depth comes from the image.
+  DepthImageState depthImage;
 };
 
 ShadeTarget makeShadeTarget(const raster::RasterState& state, Framebuffer& fb,

@@ -6,6 +6,7 @@
 
 #include "fragment/alpha_test_state.h"
 #include "fragment/blend_state.h"
+#include "fragment/depth_image_state.h"
 #include "fragment/stencil_state.h"
 #include "framebuffer/framebuffer.h"
 #include "raster/edge.h"
@@ -101,6 +102,9 @@ struct RasterState {
   GLenum spriteCoordOrigin = GL_UPPER_LEFT;
   // Blending or the logic op before the colour write (fragment/blend.inc).
   fragment::BlendState blend;
+  // glDrawPixels(GL_DEPTH_COMPONENT): fragments take their depth from the
+  // image at unit 0's texture coordinates (fragment/depth_image.inc).
+  fragment::DepthImageState depthImage;
 };
 
 // Snaps the three vertices to llvmpipe's 1/256 grid (fixed_point.h) and

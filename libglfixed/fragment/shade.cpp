@@ -25,8 +25,9 @@ namespace generic {
 #define GLFIXED_BLOCK_AVX2 0
 #include "fragment/alpha_test.inc"
 #include "fragment/blend.inc"
-#include "fragment/block_shader.inc"
 #include "fragment/depth_image.inc"
+// block_shader.inc uses the operations above.
+#include "fragment/block_shader.inc"
 #undef GLFIXED_BLOCK_AVX2
 }  // namespace generic
 
@@ -36,8 +37,9 @@ namespace avx2 {
 #define GLFIXED_BLOCK_AVX2 1
 #include "fragment/alpha_test.inc"
 #include "fragment/blend.inc"
-#include "fragment/block_shader.inc"
 #include "fragment/depth_image.inc"
+// block_shader.inc uses the operations above.
+#include "fragment/block_shader.inc"
 #undef GLFIXED_BLOCK_AVX2
 }  // namespace avx2
 #pragma GCC pop_options

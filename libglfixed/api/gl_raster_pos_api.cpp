@@ -281,7 +281,7 @@ void drawPixelsUnpacked(GLsizei width, GLsizei height, GLenum format, GLenum typ
   if (!ctx->rasterPos.valid) return;
   if (ctx->renderMode.mode != GL_RENDER) return pixelsInFeedbackOrSelect(*ctx, GL_DRAW_PIXEL_TOKEN);
   if (width == 0 || height == 0) return;
-  if (format == GL_DEPTH_COMPONENT || format == GL_STENCIL_INDEX || format == GL_COLOR_INDEX)
+  if (format == GL_STENCIL_INDEX || format == GL_COLOR_INDEX)
     return ctx->recordError(GL_INVALID_OPERATION);  // not implemented yet
   pipeline::PixelImage image;
   image.width = width;
@@ -290,6 +290,7 @@ void drawPixelsUnpacked(GLsizei width, GLsizei height, GLenum format, GLenum typ
   image.type = type;
   image.layout = layout;
   image.pixels = bytes;
+  if (format == GL_DEPTH_COMPONENT) return pipeline::drawDepthPixels(*ctx, image);
   pipeline::drawColorPixels(*ctx, image);
 }
 

@@ -27,6 +27,9 @@ namespace generic {
 #include "fragment/alpha_test.inc"
 #include "fragment/blend.inc"
 #include "fragment/fog.inc"
+
+#include "fragment/depth_image.inc"
+// block_shader.inc uses the operations above.
 #include "fragment/block_shader.inc"
 #include "fragment/wide_color.inc"
 #undef GLFIXED_BLOCK_AVX2
@@ -39,6 +42,9 @@ namespace avx2 {
 #include "fragment/alpha_test.inc"
 #include "fragment/blend.inc"
 #include "fragment/fog.inc"
+
+#include "fragment/depth_image.inc"
+// block_shader.inc uses the operations above.
 #include "fragment/block_shader.inc"
 #include "fragment/wide_color.inc"
 #undef GLFIXED_BLOCK_AVX2
@@ -131,6 +137,7 @@ ShadeTarget makeShadeTarget(const raster::RasterState& state, Framebuffer& fb,
   s.blend = state.blend;
   s.fog = t.fog ? state.fog : FogState();  // only where the vertices carried the fog distance
   s.alphaTest = state.alphaTest;
+  s.depthImage = state.depthImage;
   // The alpha test can discard after the colour: llvmpipe then tests depth late.
   if (s.alphaTest.active()) s.lateDepth = true;
   return s;

@@ -11,6 +11,8 @@
 #include "fragment/alpha_test_state.h"
 #include "fragment/blend_state.h"
 #include "fragment/fog_state.h"
+
+#include "fragment/depth_image_state.h"
 #include "fragment/stencil_state.h"
 #include "framebuffer/framebuffer.h"
 #include "raster/primitive_setup.h"
@@ -54,6 +56,9 @@ struct ShadeTarget {
   // Fog (GL 2.1 §3.10), after texturing and the colour sum, before the alpha
   // test (fragment/fog.inc); the fog distance is varying raster::kFogVarying.
   FogState fog;
+
+  // glDrawPixels(GL_DEPTH_COMPONENT): the depth comes from the image.
+  DepthImageState depthImage;
 };
 
 ShadeTarget makeShadeTarget(const raster::RasterState& state, Framebuffer& fb,

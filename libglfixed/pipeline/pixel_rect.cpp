@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <memory>
+#include <vector>
 
 #include "fragment/texture_stage.h"
 #include "pipeline/draw.h"
@@ -175,8 +177,9 @@ long long roundToInt(float v) {
 // zoomed by the pixel zoom (draw_textured_quad). `topDown`: texture row 0 is
 // the image's top row (glCopyPixels reads the buffer that way), else its
 // bottom row (glDrawPixels).
-void drawTexturedQuad(Context& ctx, const texture::TextureObject& object, long long x, long long y, int width,
-                      int height, bool topDown) {
+void drawTexturedQuad(Context& ctx, const texture::TextureObject* object,
+                      const fragment::DepthImageState* depth, long long x, long long y, int width, int height,
+                      bool topDown) {
   const PixelModeAttrib& pm = ctx.pixelMode;
   const float zoomX = pm.zoomX, zoomY = pm.zoomY;
   raster::PixelQuad q;
@@ -205,12 +208,14 @@ void drawTexturedQuad(Context& ctx, const texture::TextureObject& object, long l
       std::min(q.y0, q.y1) >= h)
     return;
   fragment::TextureStage stage;
-  fragment::TextureStage::Unit& unit = stage.units[0];
-  if (!texture::makeSamplerView(object, GL_TEXTURE_2D, 0.0f, unit.view)) return;
-  unit.unit = 0;
-  unit.env.env.mode = GL_REPLACE;  // the fragment colour is the texel (gl_Color replaced)
-  unit.env.baseFormat = GL_RGBA;
-  stage.unitCount = 1;
+  if (object) {
+    fragment::TextureStage::Unit& unit = stage.units[0];
+    if (!texture::makeSamplerView(*object, GL_TEXTURE_2D, 0.0f, unit.view)) return;
+    unit.unit = 0;
+    unit.env.env.mode = GL_REPLACE;  // the fragment colour is the texel (gl_Color replaced)
+    unit.env.baseFormat = GL_RGBA;
+    stage.unitCount = 1;
+  }
   // The quad goes down the draw module like any fan (st_draw_quad): in clip
   // space x / width * 2 - 1, clipped against the view volume when it
   // reaches past the buffer (which moves its texture coordinates), the
@@ -221,8 +226,9 @@ void drawTexturedQuad(Context& ctx, const texture::TextureObject& object, long l
   ps.viewportHeight = ctx.framebuffer.height();
   ps.constantPrimary = true;
   ps.raster = pixelRectRasterState(ctx);
-  ps.raster.textures = &stage;
+  ps.raster.textures = object ? &stage : nullptr;
   ps.raster.texCoordUnits = 1;
+  if (depth) ps.raster.depthImage = *depth;
   ps.raster.firstVertexConvention = false;  // the state tracker's rasterizer state
   ShadedVertices v;
   const float cz = q.z * 2.0f - 1.0f;
@@ -357,7 +363,7 @@ void drawColorPixels(Context& ctx, const PixelImage& image) {
   transfer.bias = pm.bias;
   texture::unpackImage(layout, image.pixels, image.format, image.type, transfer, width, height, 1, texImage,
                        0, 0, 0);
-  drawTexturedQuad(ctx, *object, x, y, width, height, false);
+  drawTexturedQuad(ctx, object.get(), nullptr, x, y, width, height, false);
 }
 
 void copyColorPixels(Context& ctx, int srcX, int srcY, int width, int height) {
@@ -406,7 +412,73 @@ void copyColorPixels(Context& ctx, int srcX, int srcY, int width, int height) {
       }
     }
   }
-  drawTexturedQuad(ctx, *object, x, y, width, height, true);
+  drawTexturedQuad(ctx, object.get(), nullptr, x, y, width, height, true);
+}
+
+void drawDepthPixels(Context& ctx, const PixelImage& image) {
+  flushBitmapCache(ctx);
+  if (!ctx.framebuffer.bound() || image.width <= 0 || image.height <= 0) return;
+  const RasterPosState& rp = ctx.rasterPos;
+  const long long x = roundToInt(rp.position.x), y = roundToInt(rp.position.y);
+  const int width = std::min(image.width, texture::kMaxTextureSize);
+  const int height = std::min(image.height, texture::kMaxTextureSize);
+  const PixelModeAttrib& pm = ctx.pixelMode;
+  if (pm.zoomX == 1.0f && pm.zoomY == 1.0f) {  // _mesa_clip_drawpixels: wholly outside reads nothing
+    const ScissorAttrib& sc = ctx.scissor;
+    long long x0 = 0, y0 = 0, x1 = ctx.framebuffer.width(), y1 = ctx.framebuffer.height();
+    if (sc.test) {
+      x0 = std::max<long long>(x0, sc.x);
+      y0 = std::max<long long>(y0, sc.y);
+      x1 = std::min<long long>(x1, static_cast<long long>(sc.x) + sc.width);
+      y1 = std::min<long long>(y1, static_cast<long long>(sc.y) + sc.height);
+    }
+    if (x + width <= x0 || x >= x1 || y + height <= y0 || y >= y1) return;
+  }
+  if (!image.pixels) return ctx.recordError(GL_OUT_OF_MEMORY);
+  // The depth the shader samples: the image unpacked (depth scale and bias
+  // applied, §3.6.5) into the texture format st_DrawPixels picks, read back
+  // as llvmpipe's sampler converts it to float.
+  std::vector<float> depth(static_cast<size_t>(width) * height);
+  if (image.type == GL_FLOAT) {  // GL_DEPTH_COMPONENT32F: the values as they are, clamped
+    for (int j = 0; j < height; ++j)
+      for (int i = 0; i < width; ++i) {
+        float v;
+        std::memcpy(
+            &v, image.pixels + image.layout.start + size_t(j) * image.layout.rowStride + size_t(i) * 4, 4);
+        if (image.layout.swapBytes) {
+          uint32_t u;
+          std::memcpy(&u, &v, 4);
+          u = __builtin_bswap32(u);
+          std::memcpy(&v, &u, 4);
+        }
+        v = v * pm.depthScale + pm.depthBias;
+        depth[size_t(j) * width + i] = v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f;  // NaN: 0
+      }
+  } else {
+    const GLint internalFormat = image.type == GL_UNSIGNED_SHORT ? GL_DEPTH_COMPONENT16
+                                 : image.type == GL_UNSIGNED_INT ? GL_DEPTH_COMPONENT32
+                                                                 : GL_DEPTH_COMPONENT24;
+    const texture::TexelFormat format = image.type == GL_UNSIGNED_SHORT ? texture::TexelFormat::Z16
+                                        : image.type == GL_UNSIGNED_INT ? texture::TexelFormat::Z32
+                                                                        : texture::TexelFormat::Z24;
+    texture::TextureImage texImage;
+    if (!texture::defineImage(texImage, internalFormat, format, width, height, 1))
+      return ctx.recordError(GL_OUT_OF_MEMORY);
+    texture::unpackImage(image.layout, image.pixels, image.format, image.type, pm, width, height, 1, texImage,
+                         0, 0, 0);
+    const float scale = format == texture::TexelFormat::Z16   ? 1.0f / 65535.0f
+                        : format == texture::TexelFormat::Z24 ? 1.0f / 16777215.0f
+                                                              : 1.0f / 4294967295.0f;
+    for (int j = 0; j < height; ++j)
+      for (int i = 0; i < width; ++i)
+        depth[size_t(j) * width + i] =
+            static_cast<float>(texture::storedChannel(format, texImage.texel(i, j, 0), 0)) * scale;
+  }
+  fragment::DepthImageState d;
+  d.depth = depth.data();
+  d.width = width;
+  d.height = height;
+  drawTexturedQuad(ctx, nullptr, &d, x, y, width, height, false);
 }
 
 }  // namespace glfixed::pipeline

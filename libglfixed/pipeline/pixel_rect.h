@@ -44,6 +44,11 @@ struct PixelImage {
 // sampled NEAREST by a quad from the rounded raster position, zoomed.
 void drawColorPixels(Context& ctx, const PixelImage& image);
 
+// glDrawPixels(GL_DEPTH_COMPONENT): the same quad, whose fragments take
+// their depth from the image (depth scale and bias applied) and the raster
+// colour; they go through the depth test and the other operations.
+void drawDepthPixels(Context& ctx, const PixelImage& image);
+
 // glCopyPixels(GL_COLOR) (§4.3.3): the source rectangle of the read buffer,
 // read whole first, drawn as glDrawPixels draws at the raster position.
 void copyColorPixels(Context& ctx, int x, int y, int width, int height);

@@ -7,6 +7,8 @@
 #include "fragment/alpha_test_state.h"
 #include "fragment/blend_state.h"
 #include "fragment/fog_state.h"
+
+#include "fragment/depth_image_state.h"
 #include "fragment/stencil_state.h"
 #include "framebuffer/framebuffer.h"
 #include "raster/edge.h"
@@ -108,6 +110,10 @@ struct RasterState {
   // carry the fog distance in varying kFogVarying, interpolated
   // perspective-correct like the texture coordinates, never flat.
   fragment::FogState fog;
+
+  // glDrawPixels(GL_DEPTH_COMPONENT): fragments take their depth from the
+  // image at unit 0's texture coordinates (fragment/depth_image.inc).
+  fragment::DepthImageState depthImage;
 };
 
 // Snaps the three vertices to llvmpipe's 1/256 grid (fixed_point.h) and

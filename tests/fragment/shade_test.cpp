@@ -57,6 +57,10 @@ TEST(Shade, Avx2MatchesGeneric) {
     if (iter % 7 == 0) st.colorWrite[iter % 4] = false;
     if (iter % 11 == 0) a.fb.color.setFormat(PixelFormat::kBGRA), b.fb.color.setFormat(PixelFormat::kBGRA);
     st.alphaTest = fragment::makeAlphaTest(iter % 3 == 2, funcs[(iter / 3) % 8], unit(rng));
+    // Fog (fog.inc: the exp2 polynomial's fused operations) on the fog varying.
+    const GLenum fogModes[3] = {GL_LINEAR, GL_EXP, GL_EXP2};
+    st.fog = fragment::makeFogState(iter % 5 >= 2, fogModes[iter % 3], 2.5f, 0.2f, 0.8f,
+                                    glm::vec4(0.3f, 0.6f, 0.9f, 1));
     for (int tri = 0; tri < 4; ++tri) {
       WindowVertex v[3];
       for (auto& x : v) {

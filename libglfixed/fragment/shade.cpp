@@ -26,8 +26,9 @@ namespace generic {
 #define GLFIXED_BLOCK_AVX2 0
 #include "fragment/alpha_test.inc"
 #include "fragment/blend.inc"
-#include "fragment/block_shader.inc"
 #include "fragment/wide_color.inc"
+// (block_shader.inc last: it uses the files above.)
+#include "fragment/block_shader.inc"
 #undef GLFIXED_BLOCK_AVX2
 }  // namespace generic
 
@@ -37,8 +38,9 @@ namespace avx2 {
 #define GLFIXED_BLOCK_AVX2 1
 #include "fragment/alpha_test.inc"
 #include "fragment/blend.inc"
-#include "fragment/block_shader.inc"
 #include "fragment/wide_color.inc"
+// (block_shader.inc last: it uses the files above.)
+#include "fragment/block_shader.inc"
 #undef GLFIXED_BLOCK_AVX2
 }  // namespace avx2
 #pragma GCC pop_options
@@ -79,6 +81,7 @@ ShadeTarget makeShadeTarget(const raster::RasterState& state, Framebuffer& fb,
   s.blue = fb.color.blue;
   s.alpha = fb.color.alpha;
   for (int k = 0; k < 4; ++k) s.colorWrite[k] = state.colorWrite[k];
+  s.clampColor = fb.color.channels != ChannelType::kFloat32 || state.clampFragmentColor;
   s.anyColor = state.colorWrite[0] || state.colorWrite[1] || state.colorWrite[2] || state.colorWrite[3];
   s.allColor = state.colorWrite[0] && state.colorWrite[1] && state.colorWrite[2] && state.colorWrite[3];
   if (state.depthTest && fb.depth.bits() != 0) {

@@ -26,12 +26,12 @@ namespace generic {
 #define GLFIXED_BLOCK_AVX2 0
 #include "fragment/alpha_test.inc"
 #include "fragment/blend.inc"
-#include "fragment/fog.inc"
-
 #include "fragment/depth_image.inc"
-// block_shader.inc uses the operations above.
-#include "fragment/block_shader.inc"
+#include "fragment/fog.inc"
 #include "fragment/wide_color.inc"
+// (block_shader.inc last, apart: it uses the files above.)
+
+#include "fragment/block_shader.inc"
 #undef GLFIXED_BLOCK_AVX2
 }  // namespace generic
 
@@ -41,12 +41,12 @@ namespace avx2 {
 #define GLFIXED_BLOCK_AVX2 1
 #include "fragment/alpha_test.inc"
 #include "fragment/blend.inc"
-#include "fragment/fog.inc"
-
 #include "fragment/depth_image.inc"
-// block_shader.inc uses the operations above.
-#include "fragment/block_shader.inc"
+#include "fragment/fog.inc"
 #include "fragment/wide_color.inc"
+// (block_shader.inc last, apart: it uses the files above.)
+
+#include "fragment/block_shader.inc"
 #undef GLFIXED_BLOCK_AVX2
 }  // namespace avx2
 #pragma GCC pop_options
@@ -102,12 +102,8 @@ ShadeTarget makeShadeTarget(const raster::RasterState& state, Framebuffer& fb,
   s.green = fb.color.green;
   s.blue = fb.color.blue;
   s.alpha = fb.color.alpha;
-  // A framebuffer object without a colour buffer to draw into (draw buffer
-  // GL_NONE, a depth-only object) still runs the depth and stencil tests.
-  const bool haveColor = fb.color.pixels != nullptr;
-  for (int k = 0; k < 4; ++k) s.colorWrite[k] = state.colorWrite[k] && haveColor;
-  s.anyColor = s.colorWrite[0] || s.colorWrite[1] || s.colorWrite[2] || s.colorWrite[3];
-  s.allColor = s.colorWrite[0] && s.colorWrite[1] && s.colorWrite[2] && s.colorWrite[3];
+#include "fragment/depth_image.inc"
+#include "fragment/fog.inc"
   if (state.depthTest && fb.depth.bits() != 0) {
     s.depthBits = fb.depth.bits();
     s.depth = fb.depth.data();

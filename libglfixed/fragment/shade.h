@@ -31,6 +31,9 @@ struct ShadeTarget {
   int bytesPerPixel = 4, red = 0, green = 1, blue = 2, alpha = 3;
   bool colorWrite[4] = {true, true, true, true};
   bool anyColor = true, allColor = true;
+  // Fragment colours clamped to [0, 1]: always but on a float buffer, where
+  // only OSMesaColorClamp(GL_TRUE) clamps them (fragment/wide_color.inc).
+  bool clampColor = true;
   // depth (bits 0: no depth test)
   int depthBits = 0;
   void* depth = nullptr;  // row-major, GL rows, `depthWidth` values a row

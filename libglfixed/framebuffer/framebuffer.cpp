@@ -10,95 +10,20 @@ void ColorBuffer::setFormat(PixelFormat f) {
   format = f;
   channels = ChannelType::kUnorm8;
   switch (f) {
-    case PixelFormat::kRGBA:
-      bytesPerPixel = 4;
-      red = 0;
-      green = 1;
-      blue = 2;
-      alpha = 3;
-      break;
-    case PixelFormat::kBGRA:
-      bytesPerPixel = 4;
-      red = 2;
-      green = 1;
-      blue = 0;
-      alpha = 3;
-      break;
-    case PixelFormat::kARGB:
-      bytesPerPixel = 4;
-      red = 1;
-      green = 2;
-      blue = 3;
-      alpha = 0;
-      break;
-    case PixelFormat::kRGB:
-      bytesPerPixel = 3;
-      red = 0;
-      green = 1;
-      blue = 2;
-      alpha = -1;
-      break;
-    case PixelFormat::kBGR:
-      bytesPerPixel = 3;
-      red = 2;
-      green = 1;
-      blue = 0;
-      alpha = -1;
-      break;
-    case PixelFormat::kBGRX:
-      bytesPerPixel = 4;
-      red = 2;
-      green = 1;
-      blue = 0;
-      alpha = -1;
-      break;
-    case PixelFormat::kRGBX:
-      bytesPerPixel = 4;
-      red = 0;
-      green = 1;
-      blue = 2;
-      alpha = -1;
-      break;
-    case PixelFormat::kRGB565:
-      bytesPerPixel = 2;
-      red = 0;
-      green = 1;
-      blue = 2;
-      alpha = -1;
-      channels = ChannelType::kRGB565;
-      break;
-    case PixelFormat::kRGBA16:
-      bytesPerPixel = 8;
-      red = 0;
-      green = 1;
-      blue = 2;
-      alpha = 3;
-      channels = ChannelType::kUnorm16;
-      break;
-    case PixelFormat::kRGB16:
-      bytesPerPixel = 6;
-      red = 0;
-      green = 1;
-      blue = 2;
-      alpha = -1;
-      channels = ChannelType::kUnorm16;
-      break;
-    case PixelFormat::kRGBA32F:
-      bytesPerPixel = 16;
-      red = 0;
-      green = 1;
-      blue = 2;
-      alpha = 3;
-      channels = ChannelType::kFloat32;
-      break;
-    case PixelFormat::kRGB32F:
-      bytesPerPixel = 12;
-      red = 0;
-      green = 1;
-      blue = 2;
-      alpha = -1;
-      channels = ChannelType::kFloat32;
-      break;
+    case PixelFormat::kRGBA: bytesPerPixel = 4; red = 0; green = 1; blue = 2; alpha = 3; break;
+    case PixelFormat::kBGRA: bytesPerPixel = 4; red = 2; green = 1; blue = 0; alpha = 3; break;
+    case PixelFormat::kARGB: bytesPerPixel = 4; red = 1; green = 2; blue = 3; alpha = 0; break;
+    case PixelFormat::kRGB:  bytesPerPixel = 3; red = 0; green = 1; blue = 2; alpha = -1; break;
+    case PixelFormat::kBGR:  bytesPerPixel = 3; red = 2; green = 1; blue = 0; alpha = -1; break;
+    case PixelFormat::kBGRX: bytesPerPixel = 4; red = 2; green = 1; blue = 0; alpha = -1; break;
+    case PixelFormat::kRGBX: bytesPerPixel = 4; red = 0; green = 1; blue = 2; alpha = -1; break;
+    // clang-format off
+    case PixelFormat::kRGB565:   bytesPerPixel = 2;  red = 0; green = 1; blue = 2; alpha = -1; channels = ChannelType::kRGB565; break;
+    case PixelFormat::kRGBA16:   bytesPerPixel = 8;  red = 0; green = 1; blue = 2; alpha = 3;  channels = ChannelType::kUnorm16; break;
+    case PixelFormat::kRGB16:    bytesPerPixel = 6;  red = 0; green = 1; blue = 2; alpha = -1; channels = ChannelType::kUnorm16; break;
+    case PixelFormat::kRGBA32F:  bytesPerPixel = 16; red = 0; green = 1; blue = 2; alpha = 3;  channels = ChannelType::kFloat32; break;
+    case PixelFormat::kRGB32F:   bytesPerPixel = 12; red = 0; green = 1; blue = 2; alpha = -1; channels = ChannelType::kFloat32; break;
+    // clang-format on
   }
 }
 
@@ -223,22 +148,16 @@ Framebuffer::Buffers Framebuffer::buffersNamed(GLenum buffer, bool forReading) c
   const Buffers back = twoBuffers ? Buffers::kBack : Buffers::kFront;
   switch (buffer) {
     case GL_NONE: return Buffers::kNone;
-    case GL_FRONT:
-    case GL_FRONT_LEFT: return Buffers::kFront;
-    case GL_BACK:
-    case GL_BACK_LEFT: return back;
-    case GL_LEFT:
-    case GL_FRONT_AND_BACK: return forReading || !twoBuffers ? Buffers::kFront : Buffers::kBoth;
-    case GL_RIGHT:
-    case GL_FRONT_RIGHT:
-    case GL_BACK_RIGHT:
-    case GL_AUX0:
-    case GL_AUX1:
-    case GL_AUX2:
-    case GL_AUX3: return Buffers::kMissing;
+    case GL_FRONT: case GL_FRONT_LEFT: return Buffers::kFront;
+    case GL_BACK: case GL_BACK_LEFT: return back;
+    case GL_LEFT: case GL_FRONT_AND_BACK:
+      return forReading || !twoBuffers ? Buffers::kFront : Buffers::kBoth;
+    case GL_RIGHT: case GL_FRONT_RIGHT: case GL_BACK_RIGHT: case GL_AUX0: case GL_AUX1: case GL_AUX2: case GL_AUX3:
+      return Buffers::kMissing;
     default:
       // GL_COLOR_ATTACHMENT0..31 (0x8CE0..) name no buffer of a window-system framebuffer.
-      return buffer >= 0x8CE0 && buffer <= 0x8CE0 + 31 ? Buffers::kMissing : Buffers::kUnknown;
+      return buffer >= 0x8CE0 && buffer <= 0x8CE0 + 31 ? Buffers::kMissing
+                                                                                 : Buffers::kUnknown;
   }
 }
 
@@ -246,8 +165,7 @@ void Framebuffer::selectBuffers(GLenum drawBuffer, GLenum readBuffer) {
   const auto view = [](Buffers b, const ColorBuffer& f, const ColorBuffer& bk) {
     switch (b) {
       case Buffers::kFront: return f;
-      case Buffers::kBack:
-      case Buffers::kBoth: return bk;
+      case Buffers::kBack: case Buffers::kBoth: return bk;
       default: return ColorBuffer{};  // GL_NONE: nothing is drawn or read
     }
   };

@@ -46,8 +46,8 @@ enum class ChannelType : uint8_t { kUnorm8, kRGB565, kUnorm16, kFloat32 };
 struct ColorBuffer {
   uint8_t* pixels = nullptr;  // client memory, not owned
   int width = 0, height = 0;
-  int rowLength = 0;  // in pixels (OSMESA_ROW_LENGTH); >= width
-  bool yUp = true;    // OSMESA_Y_UP: row 0 of memory is the bottom row
+  int rowLength = 0;          // in pixels (OSMESA_ROW_LENGTH); >= width
+  bool yUp = true;            // OSMESA_Y_UP: row 0 of memory is the bottom row
   PixelFormat format = PixelFormat::kRGBA;
   int bytesPerPixel = 4;
   // Byte offset of each channel inside a pixel (for kUnorm16 and kFloat32:
@@ -158,8 +158,8 @@ class DepthBuffer {
     else
       s8_[i] = static_cast<uint8_t>(s);
   }
-  void fill(uint32_t v);                             // depth, keeping the stencil
-  void fillStencil(uint32_t v, uint32_t writeMask);  // stencil, keeping the depth
+  void fill(uint32_t v);                                // depth, keeping the stencil
+  void fillStencil(uint32_t v, uint32_t writeMask);      // stencil, keeping the depth
 
  private:
   void pointAtOwnStorage();

@@ -89,39 +89,26 @@ namespace {
 
 int componentsOf(GLenum format) {
   switch (format) {
-    case GL_RED:
-    case GL_GREEN:
-    case GL_BLUE:
-    case GL_ALPHA:
-    case GL_LUMINANCE:
-    case GL_DEPTH_COMPONENT:
-    case GL_STENCIL_INDEX:
-    case GL_DEPTH_STENCIL: return 1;
+    case GL_RED: case GL_GREEN: case GL_BLUE: case GL_ALPHA: case GL_LUMINANCE: case GL_DEPTH_COMPONENT:
+    case GL_STENCIL_INDEX: case GL_DEPTH_STENCIL:
+      return 1;
     case GL_LUMINANCE_ALPHA: return 2;
-    case GL_RGB:
-    case GL_BGR: return 3;
-    case GL_RGBA:
-    case GL_BGRA: return 4;
+    case GL_RGB: case GL_BGR: return 3;
+    case GL_RGBA: case GL_BGRA: return 4;
     default: return 0;
   }
 }
 
 int bytesOf(GLenum type) {
   switch (type) {
-    case GL_UNSIGNED_BYTE:
-    case GL_BYTE: return 1;
-    case GL_UNSIGNED_SHORT:
-    case GL_SHORT: return 2;
-    case GL_UNSIGNED_INT:
-    case GL_INT:
-    case GL_FLOAT: return 4;
+    case GL_UNSIGNED_BYTE: case GL_BYTE: return 1;
+    case GL_UNSIGNED_SHORT: case GL_SHORT: return 2;
+    case GL_UNSIGNED_INT: case GL_INT: case GL_FLOAT: return 4;
     default: return 0;
   }
 }
 
-bool isPacked8888(GLenum type) {
-  return type == GL_UNSIGNED_INT_8_8_8_8 || type == GL_UNSIGNED_INT_8_8_8_8_REV;
-}
+bool isPacked8888(GLenum type) { return type == GL_UNSIGNED_INT_8_8_8_8 || type == GL_UNSIGNED_INT_8_8_8_8_REV; }
 
 // EXT_packed_depth_stencil and ARB_depth_buffer_float's depth-stencil pixels.
 bool isDepthStencilType(GLenum type) {
@@ -130,33 +117,22 @@ bool isDepthStencilType(GLenum type) {
 
 bool isKnownType(GLenum type) {
   switch (type) {
-    case GL_UNSIGNED_BYTE:
-    case GL_BYTE:
-    case GL_UNSIGNED_SHORT:
-    case GL_SHORT:
-    case GL_UNSIGNED_INT:
-    case GL_INT:
-    case GL_FLOAT:
-    case GL_BITMAP:
-    case GL_UNSIGNED_BYTE_3_3_2:
-    case GL_UNSIGNED_BYTE_2_3_3_REV:
-    case GL_UNSIGNED_SHORT_5_6_5:
-    case GL_UNSIGNED_SHORT_5_6_5_REV:
-    case GL_UNSIGNED_SHORT_4_4_4_4:
-    case GL_UNSIGNED_SHORT_4_4_4_4_REV:
-    case GL_UNSIGNED_SHORT_5_5_5_1:
-    case GL_UNSIGNED_SHORT_1_5_5_5_REV:
-    case GL_UNSIGNED_INT_8_8_8_8:
-    case GL_UNSIGNED_INT_8_8_8_8_REV:
-    case GL_UNSIGNED_INT_10_10_10_2:
-    case GL_UNSIGNED_INT_2_10_10_10_REV:
-    case GL_UNSIGNED_INT_24_8:
-    case GL_FLOAT_32_UNSIGNED_INT_24_8_REV: return true;
-    default: return false;
+    case GL_UNSIGNED_BYTE: case GL_BYTE: case GL_UNSIGNED_SHORT: case GL_SHORT: case GL_UNSIGNED_INT:
+    case GL_INT: case GL_FLOAT: case GL_BITMAP:
+    case GL_UNSIGNED_BYTE_3_3_2: case GL_UNSIGNED_BYTE_2_3_3_REV: case GL_UNSIGNED_SHORT_5_6_5:
+    case GL_UNSIGNED_SHORT_5_6_5_REV: case GL_UNSIGNED_SHORT_4_4_4_4: case GL_UNSIGNED_SHORT_4_4_4_4_REV:
+    case GL_UNSIGNED_SHORT_5_5_5_1: case GL_UNSIGNED_SHORT_1_5_5_5_REV: case GL_UNSIGNED_INT_8_8_8_8:
+    case GL_UNSIGNED_INT_8_8_8_8_REV: case GL_UNSIGNED_INT_10_10_10_2: case GL_UNSIGNED_INT_2_10_10_10_REV:
+    case GL_UNSIGNED_INT_24_8: case GL_FLOAT_32_UNSIGNED_INT_24_8_REV:
+      return true;
+    default:
+      return false;
   }
 }
 
-bool isKnownFormat(GLenum format) { return componentsOf(format) > 0 || format == GL_COLOR_INDEX; }
+bool isKnownFormat(GLenum format) {
+  return componentsOf(format) > 0 || format == GL_COLOR_INDEX;
+}
 
 // The bytes of one pixel of a depth-stencil type.
 int depthStencilBytes(GLenum type) { return type == GL_FLOAT_32_UNSIGNED_INT_24_8_REV ? 8 : 4; }
@@ -166,14 +142,12 @@ void storeStencil(uint8_t* dst, GLenum type, uint32_t s) {
   switch (type) {
     case GL_UNSIGNED_BYTE: *dst = static_cast<uint8_t>(s); break;
     case GL_BYTE: *dst = static_cast<uint8_t>(s & 0x7f); break;
-    case GL_UNSIGNED_SHORT:
-    case GL_SHORT: {
+    case GL_UNSIGNED_SHORT: case GL_SHORT: {
       const uint16_t v = static_cast<uint16_t>(s);
       std::memcpy(dst, &v, 2);
       break;
     }
-    case GL_UNSIGNED_INT:
-    case GL_INT: std::memcpy(dst, &s, 4); break;
+    case GL_UNSIGNED_INT: case GL_INT: std::memcpy(dst, &s, 4); break;
     case GL_FLOAT: {
       const float f = static_cast<float>(s);
       std::memcpy(dst, &f, 4);
@@ -187,9 +161,7 @@ void storeStencil(uint8_t* dst, GLenum type, uint32_t s) {
 void storeComponent(uint8_t* dst, GLenum type, float f) {
   switch (type) {
     case GL_UNSIGNED_BYTE: *dst = static_cast<uint8_t>(std::nearbyint(f * 255.0f)); break;
-    case GL_BYTE:
-      *reinterpret_cast<int8_t*>(dst) = static_cast<int8_t>(std::nearbyint((f * 255.0f - 1.0f) / 2));
-      break;
+    case GL_BYTE: *reinterpret_cast<int8_t*>(dst) = static_cast<int8_t>(std::nearbyint((f * 255.0f - 1.0f) / 2)); break;
     case GL_UNSIGNED_SHORT: {
       uint16_t v = static_cast<uint16_t>(std::nearbyint(f * 65535.0f));
       std::memcpy(dst, &v, 2);
@@ -216,14 +188,12 @@ void storeComponent(uint8_t* dst, GLenum type, float f) {
 
 }  // namespace
 
-size_t packedImageBytes(const PixelStoreAttrib& pack, GLsizei width, GLsizei height, GLenum format,
-                        GLenum type) {
+size_t packedImageBytes(const PixelStoreAttrib& pack, GLsizei width, GLsizei height, GLenum format, GLenum type) {
   if (width <= 0 || height <= 0 || !isKnownFormat(format) || !isKnownType(type)) return 0;
   const int componentBytes = isPacked8888(type) || isDepthStencilType(type) ? 1 : bytesOf(type);
-  const size_t pixelBytes = isPacked8888(type) ? 4
-                            : isDepthStencilType(type)
-                                ? depthStencilBytes(type)
-                                : static_cast<size_t>(componentsOf(format)) * componentBytes;
+  const size_t pixelBytes = isPacked8888(type)        ? 4
+                            : isDepthStencilType(type) ? depthStencilBytes(type)
+                                                       : static_cast<size_t>(componentsOf(format)) * componentBytes;
   const size_t rowPixels = pack.packRowLength > 0 ? pack.packRowLength : width;
   size_t rowBytes = rowPixels * pixelBytes;
   const size_t align = static_cast<size_t>(pack.packAlignment);
@@ -246,15 +216,14 @@ GLenum readPixels(const Framebuffer& fb, const PixelStoreAttrib& pack, GLint x, 
   if (isPacked8888(type) && format != GL_RGBA && format != GL_BGRA) return GL_INVALID_OPERATION;
   if (!isPacked8888(type) && !isDepthStencilType(type) && bytesOf(type) == 0)
     return GL_INVALID_OPERATION;  // other packed types: not yet
-  const bool depth =
-      format == GL_DEPTH_COMPONENT || stencil || depthStencil;  // read from the depth-stencil buffer
+  const bool depth = format == GL_DEPTH_COMPONENT || stencil || depthStencil;  // read from the depth-stencil buffer
   // Mesa: colour from a read buffer of GL_NONE is an invalid operation.
   if (!depth && fb.hasSurface() && !fb.read.pixels) return GL_INVALID_OPERATION;
   if (!fb.hasSurface() || !pixels || width == 0 || height == 0) return GL_NO_ERROR;
 
   const int components = componentsOf(format);
   const int componentBytes = isPacked8888(type) || isDepthStencilType(type) ? 1 : bytesOf(type);
-  const int pixelBytes = isPacked8888(type)         ? 4
+  const int pixelBytes = isPacked8888(type)        ? 4
                          : isDepthStencilType(type) ? depthStencilBytes(type)
                                                     : components * componentBytes;
   const int rowPixels = pack.packRowLength > 0 ? pack.packRowLength : width;
@@ -323,16 +292,19 @@ GLenum readPixels(const Framebuffer& fb, const PixelStoreAttrib& pack, GLint x, 
         // 5-6-5, 16-bit and float buffers: their values as floats, clamped
         // (Mesa's OSMesa buffers are not in float mode: GL_CLAMP_READ_COLOR's
         // GL_FIXED_ONLY clamps them), then converted to the type.
+        // 5-6-5 gives bytes by bit replication (ColorBuffer::read), as Mesa's
+        // unpack to 8 bits.
         fb.read.readFloat(wx, wy, f);
         for (int i = 0; i < 4; ++i) {
           f[i] = f[i] > 0.0f ? (f[i] < 1.0f ? f[i] : 1.0f) : 0.0f;
           rgba[i] = static_cast<uint8_t>(std::nearbyint(f[i] * 255.0f));
         }
+        if (fb.read.channels == ChannelType::kRGB565) fb.read.read(wx, wy, rgba);
       }
       if (isPacked8888(type)) {
         // 8_8_8_8: the first component in the highest byte; _REV: in the lowest.
-        const uint8_t c[4] = {format == GL_BGRA ? rgba[2] : rgba[0], rgba[1],
-                              format == GL_BGRA ? rgba[0] : rgba[2], rgba[3]};
+        const uint8_t c[4] = {format == GL_BGRA ? rgba[2] : rgba[0], rgba[1], format == GL_BGRA ? rgba[0] : rgba[2],
+                              rgba[3]};
         uint32_t v = type == GL_UNSIGNED_INT_8_8_8_8_REV
                          ? (uint32_t(c[3]) << 24) | (uint32_t(c[2]) << 16) | (uint32_t(c[1]) << 8) | c[0]
                          : (uint32_t(c[0]) << 24) | (uint32_t(c[1]) << 16) | (uint32_t(c[2]) << 8) | c[3];
@@ -343,17 +315,8 @@ GLenum readPixels(const Framebuffer& fb, const PixelStoreAttrib& pack, GLint x, 
         switch (format) {
           case GL_RGBA: std::memcpy(dst, rgba, 4); continue;
           case GL_RGB: std::memcpy(dst, rgba, 3); continue;
-          case GL_BGRA:
-            dst[0] = rgba[2];
-            dst[1] = rgba[1];
-            dst[2] = rgba[0];
-            dst[3] = rgba[3];
-            continue;
-          case GL_BGR:
-            dst[0] = rgba[2];
-            dst[1] = rgba[1];
-            dst[2] = rgba[0];
-            continue;
+          case GL_BGRA: dst[0] = rgba[2]; dst[1] = rgba[1]; dst[2] = rgba[0]; dst[3] = rgba[3]; continue;
+          case GL_BGR: dst[0] = rgba[2]; dst[1] = rgba[1]; dst[2] = rgba[0]; continue;
           default: break;
         }
       }
@@ -364,27 +327,11 @@ GLenum readPixels(const Framebuffer& fb, const PixelStoreAttrib& pack, GLint x, 
         case GL_BLUE: out[0] = f[2]; break;
         case GL_ALPHA: out[0] = f[3]; break;
         case GL_LUMINANCE: out[0] = std::min(1.0f, f[0] + f[1] + f[2]); break;
-        case GL_LUMINANCE_ALPHA:
-          out[0] = std::min(1.0f, f[0] + f[1] + f[2]);
-          out[1] = f[3];
-          break;
-        case GL_RGB:
-          out[0] = f[0];
-          out[1] = f[1];
-          out[2] = f[2];
-          break;
-        case GL_BGR:
-          out[0] = f[2];
-          out[1] = f[1];
-          out[2] = f[0];
-          break;
+        case GL_LUMINANCE_ALPHA: out[0] = std::min(1.0f, f[0] + f[1] + f[2]); out[1] = f[3]; break;
+        case GL_RGB: out[0] = f[0]; out[1] = f[1]; out[2] = f[2]; break;
+        case GL_BGR: out[0] = f[2]; out[1] = f[1]; out[2] = f[0]; break;
         case GL_RGBA: std::memcpy(out, f, sizeof f); break;
-        case GL_BGRA:
-          out[0] = f[2];
-          out[1] = f[1];
-          out[2] = f[0];
-          out[3] = f[3];
-          break;
+        case GL_BGRA: out[0] = f[2]; out[1] = f[1]; out[2] = f[0]; out[3] = f[3]; break;
       }
       for (int i = 0; i < components; ++i) storeComponent(dst + i * componentBytes, type, out[i]);
     }

@@ -116,6 +116,7 @@ primitive::PrimitiveState primitiveState(const Context& ctx, GLenum mode, bool s
                                  ctx.fog.color);
   r.alphaTest =
       fragment::makeAlphaTest(ctx.colorBuffer.alphaTest, ctx.colorBuffer.alphaFunc, ctx.colorBuffer.alphaRef);
+  r.clampFragmentColor = ctx.colorBuffer.clampFragmentColor;
   r.scissorX0 = std::max(0, ctx.viewport.x);
   r.scissorY0 = std::max(0, ctx.viewport.y);
   r.scissorX1 = std::min(ctx.framebuffer.width(), ctx.viewport.x + ctx.viewport.width);

@@ -137,8 +137,7 @@ GLAPI OSMesaContext APIENTRY OSMesaCreateContextAttribs(const int* attribList, O
       case OSMESA_CONTEXT_MAJOR_VERSION: major = value; break;
       case OSMESA_CONTEXT_MINOR_VERSION: minor = value; break;
       default:
-        std::fprintf(stderr, "libglfixed: OSMesaCreateContextAttribs: unknown attribute 0x%x\n",
-                     attribList[i]);
+        std::fprintf(stderr, "libglfixed: OSMesaCreateContextAttribs: unknown attribute 0x%x\n", attribList[i]);
         return nullptr;
     }
   }
@@ -218,8 +217,12 @@ GLAPI void APIENTRY OSMesaPixelStore(GLint pname, GLint value) {
       }
       c->userRowLength = value;
       break;
-    case OSMESA_Y_UP: c->yUp = value != 0; break;
-    default: c->context.recordError(GL_INVALID_ENUM); return;
+    case OSMESA_Y_UP:
+      c->yUp = value != 0;
+      break;
+    default:
+      c->context.recordError(GL_INVALID_ENUM);
+      return;
   }
   bindColorBuffer(*c, c->context.windowFramebuffer().front.pixels);
 }
@@ -228,8 +231,7 @@ GLAPI void APIENTRY OSMesaGetIntegerv(GLint pname, GLint* value) {
   osmesa_context* c = OSMesaGetCurrentContext();
   if (!value) return;
   switch (pname) {
-    case OSMESA_MAX_WIDTH:
-    case OSMESA_MAX_HEIGHT: *value = glfixed::kMaxViewportSize; return;
+    case OSMESA_MAX_WIDTH: case OSMESA_MAX_HEIGHT: *value = glfixed::kMaxViewportSize; return;
     default: break;
   }
   if (!c) return;
@@ -283,10 +285,10 @@ GLAPI OSMESAproc APIENTRY OSMesaGetProcAddress(const char* funcName) {
   return reinterpret_cast<OSMESAproc>(glfixed::api::procAddress(funcName));
 }
 
-// Mesa's OSMesaColorClamp(GL_FALSE) asks for GL_CLAMP_FRAGMENT_COLOR
-// GL_FIXED_ONLY, which still clamps: its float buffers are not in float
-// mode (GL_RGBA_FLOAT_MODE is false), so fragment colours are clamped
-// either way (measured; MESA_FACTS.md, "OSMesa colour buffer types").
+// On Mesa 22.3.6 OSMesaColorClamp changes nothing that was measured: a
+// float buffer receives unclamped fragment colours (a colour sum of 1.5)
+// after OSMesaColorClamp(GL_TRUE) too (MESA_FACTS.md, "OSMesa colour buffer
+// types"); so the context's clampFragmentColor stays false.
 GLAPI void APIENTRY OSMesaColorClamp(GLboolean enable) { (void)enable; }
 
 // Mesa's post-processing filters are not provided.

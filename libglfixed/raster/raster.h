@@ -63,6 +63,7 @@ struct RasterState {
   const fragment::TextureStage* textures = nullptr;
   // The alpha test (GL 2.1 §4.1.4; func GL_ALWAYS when disabled).
   fragment::AlphaTestState alphaTest;
+  bool clampFragmentColor = false;  // on float colour buffers too (OSMesaColorClamp)
   // Only pixels in [scissorX0, scissorX1) x [scissorY0, scissorY1) are written,
   // in GL window coordinates (y up): the viewport intersected with the buffer.
   int scissorX0 = 0, scissorY0 = 0, scissorX1 = 0, scissorY1 = 0;

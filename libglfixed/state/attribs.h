@@ -60,6 +60,10 @@ struct ColorBufferAttrib {
   glm::vec4 clearColor{0, 0, 0, 0};
   // As glClearColor got it: OSMesa's float buffers are cleared to it unclamped.
   glm::vec4 clearColorUnclamped{0, 0, 0, 0};
+  // OSMesaColorClamp(GL_TRUE): fragment colours are clamped on float buffers
+  // too (Mesa's GL_CLAMP_FRAGMENT_COLOR GL_TRUE; its default, GL_FIXED_ONLY,
+  // leaves them unclamped there).
+  bool clampFragmentColor = false;
   bool dither = true;
   std::array<bool, 4> writeMask{true, true, true, true};
   bool alphaTest = false;  // the alpha test (fragment/alpha_test.inc)

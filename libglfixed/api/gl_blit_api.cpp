@@ -18,7 +18,6 @@
 using namespace glfixed;
 using namespace glfixed::fbo_enums;
 
-
 namespace {
 
 // The depth (and stencil) buffer of the read framebuffer.
@@ -36,9 +35,7 @@ DepthBuffer readDepth(Context& ctx) {
 struct Axis {
   int s0, s1, d0, d1;
   double scale() const { return static_cast<double>(s1 - s0) / static_cast<double>(d1 - d0); }
-  float source(int d) const {
-    return static_cast<float>(s0 + (static_cast<double>(d) + 0.5 - d0) * scale());
-  }
+  float source(int d) const { return static_cast<float>(s0 + (static_cast<double>(d) + 0.5 - d0) * scale()); }
 };
 
 int clampInt(int v, int lo, int hi) { return v < lo ? lo : (v > hi ? hi : v); }
@@ -69,7 +66,8 @@ GLAPI void APIENTRY glBlitFramebuffer(GLint srcX0, GLint srcY0, GLint srcX1, GLi
   DepthBuffer srcDepth = readDepth(*ctx);
   DepthBuffer& dstDepth = fb.depth;
   // Depth and stencil need the same format on both sides (GL 3.0 §4.3.3).
-  if ((mask & GL_DEPTH_BUFFER_BIT) && srcDepth.bits() && dstDepth.bits() && srcDepth.bits() != dstDepth.bits())
+  if ((mask & GL_DEPTH_BUFFER_BIT) && srcDepth.bits() && dstDepth.bits() &&
+      srcDepth.bits() != dstDepth.bits())
     return ctx->recordError(GL_INVALID_OPERATION);
   if (srcX0 == srcX1 || srcY0 == srcY1 || dstX0 == dstX1 || dstY0 == dstY1) return;
   const Axis ax{srcX0, srcX1, dstX0, dstX1}, ay{srcY0, srcY1, dstY0, dstY1};
@@ -150,15 +148,16 @@ GLAPI void APIENTRY glBlitFramebuffer(GLint srcX0, GLint srcY0, GLint srcX1, GLi
     for (int j = 0; j < h; ++j)
       for (int i = 0; i < w; ++i) {
         const size_t k = static_cast<size_t>(j) * w + i;
-        if (depth && d[k] >= 0)
-          dstDepth.set(x0 + i, y0 + j, static_cast<uint32_t>(d[k]));
-        if (stencil && s[k] >= 0) dstDepth.setStencil(x0 + i, y0 + j, static_cast<uint32_t>(s[k]), stencilMask);
+        if (depth && d[k] >= 0) dstDepth.set(x0 + i, y0 + j, static_cast<uint32_t>(d[k]));
+        if (stencil && s[k] >= 0)
+          dstDepth.setStencil(x0 + i, y0 + j, static_cast<uint32_t>(s[k]), stencilMask);
       }
   }
 }
 
 GLAPI void APIENTRY glBlitFramebufferEXT(GLint srcX0, GLint srcY0, GLint srcX1, GLint srcY1, GLint dstX0,
-                                         GLint dstY0, GLint dstX1, GLint dstY1, GLbitfield mask, GLenum filter) {
+                                         GLint dstY0, GLint dstX1, GLint dstY1, GLbitfield mask,
+                                         GLenum filter) {
   glBlitFramebuffer(srcX0, srcY0, srcX1, srcY1, dstX0, dstY0, dstX1, dstY1, mask, filter);
 }
 

@@ -66,6 +66,7 @@ GLAPI void APIENTRY glClear(GLbitfield mask) {
   const PixelBox box = clearBox(*ctx, &byQuad);
   if (mask & GL_COLOR_BUFFER_BIT) {
     clearColor(fb.color, ctx->colorBuffer, box);
+    for (int i = 0; i < fb.moreColorCount; ++i) clearColor(fb.moreColor[i], ctx->colorBuffer, box);
     if (fb.drawsIntoBoth(ctx->colorBuffer.drawBuffer))
       clearColor(fb.front, ctx->colorBuffer, box);
   }

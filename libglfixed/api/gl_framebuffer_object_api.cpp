@@ -214,7 +214,8 @@ GLAPI void APIENTRY glDeleteFramebuffers(GLsizei n, const GLuint* framebuffers) 
     // A bound framebuffer is unbound first: 0 takes its place (§4.4.1).
     if (ctx->fbo.draw == name || ctx->fbo.read == name) {
       attachmentsChanging(*ctx);
-      bindFramebuffers(*ctx, ctx->fbo.draw == name ? 0 : ctx->fbo.draw, ctx->fbo.read == name ? 0 : ctx->fbo.read);
+      bindFramebuffers(*ctx, ctx->fbo.draw == name ? 0 : ctx->fbo.draw,
+                       ctx->fbo.read == name ? 0 : ctx->fbo.read);
     }
     ctx->framebufferObjects->removeFramebuffer(name);
   }
@@ -290,9 +291,12 @@ GLAPI void APIENTRY glGetFramebufferAttachmentParameteriv(GLenum target, GLenum 
                               attachment == GL_FRONT_RIGHT || attachment == GL_BACK_RIGHT ||
                               attachment == GL_DEPTH || attachment == GL_STENCIL;
     if (!windowBuffer) return ctx->recordError(GL_INVALID_ENUM);
-    if (pname == 0x8CD0) *params = static_cast<GLint>(kFramebufferDefault);
-    else if (pname == 0x8CD1) *params = 0;
-    else ctx->recordError(GL_INVALID_ENUM);
+    if (pname == 0x8CD0)
+      *params = static_cast<GLint>(kFramebufferDefault);
+    else if (pname == 0x8CD1)
+      *params = 0;
+    else
+      ctx->recordError(GL_INVALID_ENUM);
     return;
   }
   if (!attachmentPointValid(*ctx, *fb, attachment)) return;
@@ -316,9 +320,10 @@ GLAPI void APIENTRY glGetFramebufferAttachmentParameteriv(GLenum target, GLenum 
       return;
     case 0x8CD3:  // GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_CUBE_MAP_FACE
       if (a.type != GL_TEXTURE) break;
-      *params = a.textarget >= GL_TEXTURE_CUBE_MAP_POSITIVE_X && a.textarget <= GL_TEXTURE_CUBE_MAP_POSITIVE_X + 5
-                    ? static_cast<GLint>(a.textarget)
-                    : 0;
+      *params =
+          a.textarget >= GL_TEXTURE_CUBE_MAP_POSITIVE_X && a.textarget <= GL_TEXTURE_CUBE_MAP_POSITIVE_X + 5
+              ? static_cast<GLint>(a.textarget)
+              : 0;
       return;
     case 0x8CD4:  // GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_3D_ZOFFSET / _LAYER
       if (a.type != GL_TEXTURE) break;
@@ -344,9 +349,12 @@ GLAPI void APIENTRY glGetFramebufferAttachmentParameteriv(GLenum target, GLenum 
     case 0x8211:                               // _COMPONENT_TYPE: unsigned normalized
       *params = attachment == kStencilAttachment ? GL_UNSIGNED_INT : 0x8C17;
       return;
-    case 0x8212: case 0x8213: case 0x8214: case 0x8215: case 0x8216: case 0x8217:
-      *params = sizes[pname - 0x8212];
-      return;
+    case 0x8212:
+    case 0x8213:
+    case 0x8214:
+    case 0x8215:
+    case 0x8216:
+    case 0x8217: *params = sizes[pname - 0x8212]; return;
     default: break;
   }
   ctx->recordError(GL_INVALID_ENUM);
@@ -390,7 +398,8 @@ GLAPI GLboolean APIENTRY glIsRenderbuffer(GLuint renderbuffer) {
   return rb && rb->bound ? GL_TRUE : GL_FALSE;
 }
 
-GLAPI void APIENTRY glRenderbufferStorage(GLenum target, GLenum internalformat, GLsizei width, GLsizei height) {
+GLAPI void APIENTRY glRenderbufferStorage(GLenum target, GLenum internalformat, GLsizei width,
+                                          GLsizei height) {
   renderbufferStorage(target, 0, internalformat, width, height, false);
 }
 
@@ -407,11 +416,11 @@ GLAPI void APIENTRY glGetRenderbufferParameteriv(GLenum target, GLenum pname, GL
   if (!rb) return ctx->recordError(GL_INVALID_OPERATION);
   const bool haveFormat = rb->width > 0;
   switch (pname) {
-    case 0x8D42: *params = rb->width; return;                                  // GL_RENDERBUFFER_WIDTH
-    case 0x8D43: *params = rb->height; return;                                 // _HEIGHT
-    case 0x8D44: *params = static_cast<GLint>(rb->internalFormat); return;     // _INTERNAL_FORMAT
-    case 0x8CAB: *params = rb->samples; return;                                // _SAMPLES
-    case 0x8D50: *params = haveFormat ? rb->format.red : 0; return;           // _RED_SIZE
+    case 0x8D42: *params = rb->width; return;                               // GL_RENDERBUFFER_WIDTH
+    case 0x8D43: *params = rb->height; return;                              // _HEIGHT
+    case 0x8D44: *params = static_cast<GLint>(rb->internalFormat); return;  // _INTERNAL_FORMAT
+    case 0x8CAB: *params = rb->samples; return;                             // _SAMPLES
+    case 0x8D50: *params = haveFormat ? rb->format.red : 0; return;         // _RED_SIZE
     case 0x8D51: *params = haveFormat ? rb->format.green : 0; return;
     case 0x8D52: *params = haveFormat ? rb->format.blue : 0; return;
     case 0x8D53: *params = haveFormat ? rb->format.alpha : 0; return;
@@ -438,11 +447,10 @@ GLAPI void APIENTRY glDrawBuffers(GLsizei n, const GLenum* bufs) {
     const GLenum b = bufs[i];
     if (b == GL_NONE) continue;
     if (b < kColorAttachment0 || b >= kColorAttachment0 + kMaxColorAttachments) {
-      const bool known = b == GL_FRONT || b == GL_BACK || b == GL_LEFT || b == GL_RIGHT ||
-                         b == GL_FRONT_AND_BACK || b == GL_FRONT_LEFT || b == GL_FRONT_RIGHT ||
-                         b == GL_BACK_LEFT || b == GL_BACK_RIGHT || (b >= GL_AUX0 && b <= GL_AUX3) ||
-                         (b >= kColorAttachment0 && b < kColorAttachment0 + 32);
-      return ctx->recordError(known ? GL_INVALID_OPERATION : GL_INVALID_ENUM);
+      // Mesa: a window buffer name (GL_BACK) is GL_INVALID_ENUM here (probed),
+      // an attachment past the maximum GL_INVALID_OPERATION.
+      const bool pastMax = b >= kColorAttachment0 && b < kColorAttachment0 + 32;
+      return ctx->recordError(pastMax ? GL_INVALID_OPERATION : GL_INVALID_ENUM);
     }
     for (GLsizei j = 0; j < i; ++j)
       if (bufs[j] == b) return ctx->recordError(GL_INVALID_OPERATION);
@@ -465,8 +473,11 @@ GLAPI void APIENTRY glBindRenderbufferEXT(GLenum target, GLuint renderbuffer) {
 GLAPI void APIENTRY glDeleteRenderbuffersEXT(GLsizei n, const GLuint* renderbuffers) {
   glDeleteRenderbuffers(n, renderbuffers);
 }
-GLAPI void APIENTRY glGenRenderbuffersEXT(GLsizei n, GLuint* renderbuffers) { glGenRenderbuffers(n, renderbuffers); }
-GLAPI void APIENTRY glRenderbufferStorageEXT(GLenum target, GLenum internalformat, GLsizei width, GLsizei height) {
+GLAPI void APIENTRY glGenRenderbuffersEXT(GLsizei n, GLuint* renderbuffers) {
+  glGenRenderbuffers(n, renderbuffers);
+}
+GLAPI void APIENTRY glRenderbufferStorageEXT(GLenum target, GLenum internalformat, GLsizei width,
+                                             GLsizei height) {
   glRenderbufferStorage(target, internalformat, width, height);
 }
 GLAPI void APIENTRY glRenderbufferStorageMultisampleEXT(GLenum target, GLsizei samples, GLenum internalformat,
@@ -477,22 +488,26 @@ GLAPI void APIENTRY glGetRenderbufferParameterivEXT(GLenum target, GLenum pname,
   glGetRenderbufferParameteriv(target, pname, params);
 }
 GLAPI GLboolean APIENTRY glIsFramebufferEXT(GLuint framebuffer) { return glIsFramebuffer(framebuffer); }
-GLAPI void APIENTRY glBindFramebufferEXT(GLenum target, GLuint framebuffer) { glBindFramebuffer(target, framebuffer); }
+GLAPI void APIENTRY glBindFramebufferEXT(GLenum target, GLuint framebuffer) {
+  glBindFramebuffer(target, framebuffer);
+}
 GLAPI void APIENTRY glDeleteFramebuffersEXT(GLsizei n, const GLuint* framebuffers) {
   glDeleteFramebuffers(n, framebuffers);
 }
-GLAPI void APIENTRY glGenFramebuffersEXT(GLsizei n, GLuint* framebuffers) { glGenFramebuffers(n, framebuffers); }
+GLAPI void APIENTRY glGenFramebuffersEXT(GLsizei n, GLuint* framebuffers) {
+  glGenFramebuffers(n, framebuffers);
+}
 GLAPI GLenum APIENTRY glCheckFramebufferStatusEXT(GLenum target) { return glCheckFramebufferStatus(target); }
-GLAPI void APIENTRY glFramebufferTexture1DEXT(GLenum target, GLenum attachment, GLenum textarget, GLuint texture,
-                                              GLint level) {
+GLAPI void APIENTRY glFramebufferTexture1DEXT(GLenum target, GLenum attachment, GLenum textarget,
+                                              GLuint texture, GLint level) {
   glFramebufferTexture1D(target, attachment, textarget, texture, level);
 }
-GLAPI void APIENTRY glFramebufferTexture2DEXT(GLenum target, GLenum attachment, GLenum textarget, GLuint texture,
-                                              GLint level) {
+GLAPI void APIENTRY glFramebufferTexture2DEXT(GLenum target, GLenum attachment, GLenum textarget,
+                                              GLuint texture, GLint level) {
   glFramebufferTexture2D(target, attachment, textarget, texture, level);
 }
-GLAPI void APIENTRY glFramebufferTexture3DEXT(GLenum target, GLenum attachment, GLenum textarget, GLuint texture,
-                                              GLint level, GLint zoffset) {
+GLAPI void APIENTRY glFramebufferTexture3DEXT(GLenum target, GLenum attachment, GLenum textarget,
+                                              GLuint texture, GLint level, GLint zoffset) {
   glFramebufferTexture3D(target, attachment, textarget, texture, level, zoffset);
 }
 GLAPI void APIENTRY glFramebufferRenderbufferEXT(GLenum target, GLenum attachment, GLenum renderbuffertarget,

@@ -250,6 +250,30 @@ void DepthBuffer::view(int width, int height, int bits, int stencilBits, void* d
   s8_ = stencilBits_ && bits == 0 ? stencil8 : nullptr;
 }
 
+std::vector<uint8_t> DepthBuffer::saveValues() const {
+  const size_t n = count();
+  std::vector<uint8_t> out;
+  const uint8_t* d = bits_ == 16 ? reinterpret_cast<const uint8_t*>(d16_) : reinterpret_cast<const uint8_t*>(d32_);
+  if (d) out.insert(out.end(), d, d + n * static_cast<size_t>(bytesPerValue()));
+  if (s8_) out.insert(out.end(), s8_, s8_ + n);
+  return out;
+}
+
+void DepthBuffer::restoreValues(const std::vector<uint8_t>& saved) {
+  const size_t n = count();
+  size_t at = 0;
+  uint8_t* d = bits_ == 16 ? reinterpret_cast<uint8_t*>(d16_) : reinterpret_cast<uint8_t*>(d32_);
+  if (d) {
+    const size_t bytes = n * static_cast<size_t>(bytesPerValue());
+    if (saved.size() < bytes) return;
+    std::copy(saved.begin(), saved.begin() + static_cast<std::ptrdiff_t>(bytes), d);
+    at = bytes;
+  }
+  if (s8_ && saved.size() >= at + n)
+    std::copy(saved.begin() + static_cast<std::ptrdiff_t>(at), saved.begin() + static_cast<std::ptrdiff_t>(at + n),
+              s8_);
+}
+
 void DepthBuffer::fill(uint32_t v) {
   const size_t n = count();
   if (bits_ == 0) return;

@@ -158,6 +158,9 @@ class DepthBuffer {
     else
       s8_[i] = static_cast<uint8_t>(s);
   }
+  // The values, to put back after a pass into one of several draw buffers.
+  std::vector<uint8_t> saveValues() const;
+  void restoreValues(const std::vector<uint8_t>& saved);
   void fill(uint32_t v);                                // depth, keeping the stencil
   void fillStencil(uint32_t v, uint32_t writeMask);      // stencil, keeping the depth
 
@@ -205,6 +208,12 @@ struct Framebuffer {
   // pixels; `color` may have no pixels (a depth-only object) and still be drawn.
   bool object = false;
   int objectWidth = 0, objectHeight = 0;
+  // glDrawBuffers: the object's draw buffers 1..7 that name an attachment;
+  // the draws and glClear do them after `color`, from the same depth values
+  // (Mesa's fixed-function fragment shader writes gl_FragColor, which goes to
+  // every draw buffer).
+  ColorBuffer moreColor[7];
+  int moreColorCount = 0;
 
   bool bound() const { return color.pixels != nullptr || object; }
   bool hasSurface() const { return front.pixels != nullptr || object; }

@@ -254,6 +254,24 @@ void drawBatch(Context& ctx, const VertexBatch& batch, primitive::PrimitiveState
       break;
     }
   Framebuffer& fb = ctx.framebuffer;
+  if (fb.moreColorCount > 0) {
+    // glDrawBuffers: the same primitives into each draw buffer, from the
+    // same depth and stencil values and stipple phase; the last pass's
+    // depth and stencil stay.
+    const ColorBuffer first = fb.color;
+    const uint32_t stippleStart = ctx.lineStipple.counter;
+    const std::vector<uint8_t> depthStart = fb.depth.saveValues();
+    for (int i = 0; i <= fb.moreColorCount; ++i) {
+      if (i > 0) {
+        fb.depth.restoreValues(depthStart);
+        ctx.lineStipple.counter = stippleStart;
+        fb.color = fb.moreColor[i - 1];
+      }
+      primitive::drawPrimitives(ps, shaded, fb);
+    }
+    fb.color = first;
+    return;
+  }
   if (!fb.drawsIntoBoth(ctx.colorBuffer.drawBuffer)) return primitive::drawPrimitives(ps, shaded, fb);
   // GL_FRONT_AND_BACK (and GL_LEFT) on a double-buffered surface: the same
   // primitives into the back buffer, then into the front one from the same

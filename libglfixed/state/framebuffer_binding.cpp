@@ -70,6 +70,14 @@ void refreshFramebuffer(Context& ctx) {
       composed.objectHeight = h;
       composed.color = attachmentNamed(ctx, *d, ctx.colorBuffer.drawBuffer);
       composed.front = composed.color;
+      for (int i = 1; i < kMaxColorAttachments; ++i) {
+        const ColorBuffer c = attachmentNamed(ctx, *d, d->drawBuffers[i]);
+        if (!c.pixels) continue;
+        if (!composed.color.pixels)
+          composed.color = composed.front = c;
+        else
+          composed.moreColor[composed.moreColorCount++] = c;
+      }
       depthView(*d, objects, *ctx.textures, &composed.depth);
     }
   } else {

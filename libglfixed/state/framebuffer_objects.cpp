@@ -28,44 +28,87 @@ bool renderbufferFormat(GLenum internalFormat, RenderbufferFormat* out) {
   using Kind = RenderbufferFormat::Kind;
   RenderbufferFormat f;
   switch (internalFormat) {
-    case GL_RGBA: case GL_RGBA8: f = colorFormat(8, 8, 8, 8, true); break;
-    case GL_RGB: case GL_RGB8: f = colorFormat(8, 8, 8, 0, true); break;
-    case GL_RGBA2: case GL_RGBA4: f = colorFormat(4, 4, 4, 4); break;
+    case GL_RGBA:
+    case GL_RGBA8: f = colorFormat(8, 8, 8, 8, true); break;
+    case GL_RGB:
+    case GL_RGB8: f = colorFormat(8, 8, 8, 0, true); break;
+    case GL_RGBA2:
+    case GL_RGBA4: f = colorFormat(4, 4, 4, 4); break;
     case GL_RGB5_A1: f = colorFormat(5, 5, 5, 1); break;
     case 0x8D62: f = colorFormat(5, 6, 5, 0); break;  // GL_RGB565
-    case GL_R3_G3_B2: case GL_RGB4: case GL_RGB5: f = colorFormat(5, 6, 5, 0); break;
+    case GL_R3_G3_B2:
+    case GL_RGB4:
+    case GL_RGB5: f = colorFormat(5, 6, 5, 0); break;
     case GL_RGB10: f = colorFormat(10, 10, 10, 0); break;
     case GL_RGB10_A2: f = colorFormat(10, 10, 10, 2); break;
-    case GL_RGBA12: case GL_RGBA16: f = colorFormat(16, 16, 16, 16); break;
-    case GL_RGB12: case GL_RGB16: f = colorFormat(16, 16, 16, 0); break;
-    case GL_ALPHA: case GL_ALPHA4: case GL_ALPHA8: f = colorFormat(0, 0, 0, 8); break;
-    case GL_ALPHA12: case GL_ALPHA16: f = colorFormat(0, 0, 0, 16); break;
+    case GL_RGBA12:
+    case GL_RGBA16: f = colorFormat(16, 16, 16, 16); break;
+    case GL_RGB12:
+    case GL_RGB16: f = colorFormat(16, 16, 16, 0); break;
+    case GL_ALPHA:
+    case GL_ALPHA4:
+    case GL_ALPHA8: f = colorFormat(0, 0, 0, 8); break;
+    case GL_ALPHA12:
+    case GL_ALPHA16: f = colorFormat(0, 0, 0, 16); break;
     case 0x8229: f = colorFormat(8, 0, 0, 0); break;  // GL_R8
     case 0x822B: f = colorFormat(8, 8, 0, 0); break;  // GL_RG8
-    case 0x8C43: case 0x8C42: f = colorFormat(8, 8, 8, 8); break;  // GL_SRGB8_ALPHA8, GL_SRGB_ALPHA
+    case 0x8C43:
+    case 0x8C42: f = colorFormat(8, 8, 8, 8); break;      // GL_SRGB8_ALPHA8, GL_SRGB_ALPHA
     case 0x8814: f = colorFormat(32, 32, 32, 32); break;  // GL_RGBA32F
     case 0x881A: f = colorFormat(16, 16, 16, 16); break;  // GL_RGBA16F
-    case GL_LUMINANCE: case GL_LUMINANCE4: case GL_LUMINANCE8: case GL_LUMINANCE12: case GL_LUMINANCE16:
-    case GL_LUMINANCE_ALPHA: case GL_LUMINANCE4_ALPHA4: case GL_LUMINANCE6_ALPHA2: case GL_LUMINANCE8_ALPHA8:
-    case GL_LUMINANCE12_ALPHA4: case GL_LUMINANCE12_ALPHA12: case GL_LUMINANCE16_ALPHA16:
-    case GL_INTENSITY: case GL_INTENSITY4: case GL_INTENSITY8: case GL_INTENSITY12: case GL_INTENSITY16:
-      f = colorFormat(0, 0, 0, 0);
-      break;
-    case GL_DEPTH_COMPONENT: case GL_DEPTH_COMPONENT24:
-      f.kind = Kind::kDepth; f.depth = 24; f.drawable = true; f.bytesPerPixel = 4;  // Z24X8
+    case GL_LUMINANCE:
+    case GL_LUMINANCE4:
+    case GL_LUMINANCE8:
+    case GL_LUMINANCE12:
+    case GL_LUMINANCE16:
+    case GL_LUMINANCE_ALPHA:
+    case GL_LUMINANCE4_ALPHA4:
+    case GL_LUMINANCE6_ALPHA2:
+    case GL_LUMINANCE8_ALPHA8:
+    case GL_LUMINANCE12_ALPHA4:
+    case GL_LUMINANCE12_ALPHA12:
+    case GL_LUMINANCE16_ALPHA16:
+    case GL_INTENSITY:
+    case GL_INTENSITY4:
+    case GL_INTENSITY8:
+    case GL_INTENSITY12:
+    case GL_INTENSITY16: f = colorFormat(0, 0, 0, 0); break;
+    case GL_DEPTH_COMPONENT:
+    case GL_DEPTH_COMPONENT24:
+      f.kind = Kind::kDepth;
+      f.depth = 24;
+      f.drawable = true;
+      f.bytesPerPixel = 4;  // Z24X8
       break;
     case GL_DEPTH_COMPONENT16:
-      f.kind = Kind::kDepth; f.depth = 16; f.drawable = true; f.bytesPerPixel = 2;
+      f.kind = Kind::kDepth;
+      f.depth = 16;
+      f.drawable = true;
+      f.bytesPerPixel = 2;
       break;
     case GL_DEPTH_COMPONENT32:
     case 0x8CAC:  // GL_DEPTH_COMPONENT32F
-      f.kind = Kind::kDepth; f.depth = 32; f.bytesPerPixel = 4;
+      f.kind = Kind::kDepth;
+      f.depth = 32;
+      f.bytesPerPixel = 4;
       break;
-    case GL_STENCIL_INDEX: case 0x8D46: case 0x8D47: case 0x8D48: case 0x8D49:  // STENCIL_INDEX1/4/8/16
-      f.kind = Kind::kStencil; f.stencil = 8; f.drawable = true; f.bytesPerPixel = 1;
+    case GL_STENCIL_INDEX:
+    case 0x8D46:
+    case 0x8D47:
+    case 0x8D48:
+    case 0x8D49:  // STENCIL_INDEX1/4/8/16
+      f.kind = Kind::kStencil;
+      f.stencil = 8;
+      f.drawable = true;
+      f.bytesPerPixel = 1;
       break;
-    case 0x84F9: case 0x88F0:  // GL_DEPTH_STENCIL, GL_DEPTH24_STENCIL8
-      f.kind = Kind::kDepthStencil; f.depth = 24; f.stencil = 8; f.drawable = true; f.bytesPerPixel = 4;
+    case 0x84F9:
+    case 0x88F0:  // GL_DEPTH_STENCIL, GL_DEPTH24_STENCIL8
+      f.kind = Kind::kDepthStencil;
+      f.depth = 24;
+      f.stencil = 8;
+      f.drawable = true;
+      f.bytesPerPixel = 4;
       break;
     default: return false;
   }
@@ -171,7 +214,8 @@ GLenum attachmentStatus(const Attachment& a, Point point, FramebufferObjects& ob
     switch (point) {
       case Point::kColor:
         if (depthFormat) return kIncompleteAttachment;
-        *drawable = image->format == texture::TexelFormat::RGBA8 || image->format == texture::TexelFormat::RGBX8;
+        *drawable =
+            image->format == texture::TexelFormat::RGBA8 || image->format == texture::TexelFormat::RGBX8;
         break;
       case Point::kDepth:
         if (!depthFormat) return kIncompleteAttachment;
@@ -198,8 +242,8 @@ GLenum attachmentStatus(const Attachment& a, Point point, FramebufferObjects& ob
 
 }  // namespace
 
-GLenum framebufferStatus(FramebufferObject& fb, FramebufferObjects& objects, texture::TextureObjects& textures,
-                         int* width, int* height) {
+GLenum framebufferStatus(FramebufferObject& fb, FramebufferObjects& objects,
+                         texture::TextureObjects& textures, int* width, int* height) {
   int minW = 1 << 30, minH = 1 << 30, images = 0;
   bool allDrawable = true;
   auto test = [&](const Attachment& a, Point p) -> GLenum {
@@ -222,7 +266,8 @@ GLenum framebufferStatus(FramebufferObject& fb, FramebufferObjects& objects, tex
   if (images == 0) return kIncompleteMissingAttachment;
   // llvmpipe's state tracker (st_validate_framebuffer): depth and stencil
   // must be one buffer when both are attached.
-  if (fb.depth.type != GL_NONE && fb.stencil.type != GL_NONE && !(fb.depth == fb.stencil)) return kUnsupported;
+  if (fb.depth.type != GL_NONE && fb.stencil.type != GL_NONE && !(fb.depth == fb.stencil))
+    return kUnsupported;
   if (!allDrawable) return kUnsupported;  // formats this library does not draw into
   *width = minW;
   *height = minH;
@@ -270,8 +315,9 @@ void depthView(const FramebufferObject& fb, FramebufferObjects& objects, texture
   if (fb.depth.type == GL_TEXTURE) {
     texture::TextureImage* image = attachedImage(fb.depth, textures);
     if (!image || !image->defined() || fb.depth.layer >= image->depth) return;
-    const int bits = image->format == texture::TexelFormat::Z16 ? 16
-                     : image->format == texture::TexelFormat::Z24 ? 24 : 0;
+    const int bits = image->format == texture::TexelFormat::Z16   ? 16
+                     : image->format == texture::TexelFormat::Z24 ? 24
+                                                                  : 0;
     if (bits == 0) return;
     out->view(image->width, image->height, bits, 0,
               image->texels.data() + static_cast<size_t>(fb.depth.layer) * image->imageStride, nullptr);

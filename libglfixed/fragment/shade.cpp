@@ -102,8 +102,13 @@ ShadeTarget makeShadeTarget(const raster::RasterState& state, Framebuffer& fb,
   s.green = fb.color.green;
   s.blue = fb.color.blue;
   s.alpha = fb.color.alpha;
-#include "fragment/depth_image.inc"
-#include "fragment/fog.inc"
+  // A framebuffer object without a colour buffer to draw into (draw buffer
+  // GL_NONE, a depth-only object) still runs the depth and stencil tests.
+  const bool haveColor = fb.color.pixels != nullptr;
+  for (int k = 0; k < 4; ++k) s.colorWrite[k] = state.colorWrite[k] && haveColor;
+  s.clampColor = fb.color.channels != ChannelType::kFloat32 || state.clampFragmentColor;
+  s.anyColor = s.colorWrite[0] || s.colorWrite[1] || s.colorWrite[2] || s.colorWrite[3];
+  s.allColor = s.colorWrite[0] && s.colorWrite[1] && s.colorWrite[2] && s.colorWrite[3];
   if (state.depthTest && fb.depth.bits() != 0) {
     s.depthBits = fb.depth.bits();
     s.depth = fb.depth.data();

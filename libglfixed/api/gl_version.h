@@ -3,9 +3,11 @@
 // GetProcAddress, so these promise only what works.
 //
 // GL 2.0 needs GLSL, which the library does not have: the version is 1.5,
-// the last one without shaders. The pixel rectangles of GL 1.0-1.4 come
-// later (issue 15); blending and the logic op (fragment/blend.inc), the
-// stencil test and fog (fragment/fog.inc) are here.
+// the last one without shaders. Blending and the logic op
+// (fragment/blend.inc), the stencil test, fog (fragment/fog.inc) and most
+// pixel rectangles are here; the framebuffer-object commands exist but their
+// extensions are not named until every format Mesa draws into is drawn
+// (piglit switches to FBO paths on seeing them).
 // The extensions listed are those whose every command and enum works.
 #pragma once
 

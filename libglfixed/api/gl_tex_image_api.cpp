@@ -339,6 +339,9 @@ GLAPI void APIENTRY glGetTexLevelParameteriv(GLenum target, GLint level, GLenum 
     case GL_TEXTURE_LUMINANCE_SIZE: v = sizes.luminance; break;
     case GL_TEXTURE_INTENSITY_SIZE: v = sizes.intensity; break;
     case GL_TEXTURE_DEPTH_SIZE: v = sizes.depth; break;
+    // EXT_packed_depth_stencil's name (Mesa answers it): no stored format has
+    // stencil bits.
+    case 0x88F1: v = 0; break;  // GL_TEXTURE_STENCIL_SIZE
     case GL_TEXTURE_COMPRESSED: v = GL_FALSE; break;  // stored uncompressed
     case GL_TEXTURE_COMPRESSED_IMAGE_SIZE:
       // Not a compressed image (GL 2.1 §6.1.3).

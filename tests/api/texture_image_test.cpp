@@ -90,6 +90,8 @@ TEST_F(TextureImageTest, EveryInternalFormatAtLlvmpipesPrecision) {
     EXPECT_EQ(LevelInt(GL_TEXTURE_2D, 0, GL_TEXTURE_LUMINANCE_SIZE), s.l) << std::hex << s.internal;
     EXPECT_EQ(LevelInt(GL_TEXTURE_2D, 0, GL_TEXTURE_INTENSITY_SIZE), s.i) << std::hex << s.internal;
     EXPECT_EQ(LevelInt(GL_TEXTURE_2D, 0, GL_TEXTURE_DEPTH_SIZE), s.d) << std::hex << s.internal;
+    EXPECT_EQ(LevelInt(GL_TEXTURE_2D, 0, 0x88F1 /* GL_TEXTURE_STENCIL_SIZE */), 0) << std::hex << s.internal;
+    ASSERT_NO_GL_ERROR() << std::hex << s.internal;
     // A generic compressed format Mesa cannot compress reads as its base format.
     const GLint reported = s.internal == GL_COMPRESSED_ALPHA       ? GL_ALPHA
                            : s.internal == GL_COMPRESSED_INTENSITY ? GL_INTENSITY

@@ -1,6 +1,6 @@
 // Helpers of the pixel-rectangle API tests (pixel_rect_test.cpp,
-// draw_pixels_test.cpp): a one-unit-a-pixel projection, and the whole
-// buffer read back as RGBA bytes.
+// draw_pixels_test.cpp): a one-unit-a-pixel projection, a black clear, and
+// the whole buffer read back as RGBA bytes.
 #pragma once
 
 #include <array>
@@ -28,6 +28,20 @@ inline std::vector<unsigned char> ReadAll() {
 inline std::array<int, 4> At(const std::vector<unsigned char>& p, int x, int y) {
   const unsigned char* q = p.data() + (static_cast<size_t>(y) * kWidth + x) * 4;
   return {q[0], q[1], q[2], q[3]};
+}
+
+inline void ClearBlack() {
+  glClearColor(0, 0, 0, 0);
+  glClearDepth(1);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+}
+
+// How many pixels of a ReadAll() are exactly c.
+inline int CountColored(const std::vector<unsigned char>& p, std::array<int, 4> c) {
+  int n = 0;
+  for (int y = 0; y < kHeight; ++y)
+    for (int x = 0; x < kWidth; ++x) n += At(p, x, y) == c;
+  return n;
 }
 
 }  // namespace glfx_test

@@ -14,19 +14,6 @@ namespace {
 
 using PixelRectTest = GLTest;
 
-int CountColored(const std::vector<unsigned char>& p, std::array<int, 4> c) {
-  int n = 0;
-  for (int y = 0; y < kHeight; ++y)
-    for (int x = 0; x < kWidth; ++x) n += At(p, x, y) == c;
-  return n;
-}
-
-void ClearBlack() {
-  glClearColor(0, 0, 0, 0);
-  glClearDepth(1);
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-}
-
 // A 16 x 4 bitmap: row j has bits set at the columns of the pattern.
 const GLubyte kBits[4][2] = {{0xff, 0x00}, {0x81, 0x81}, {0xaa, 0x55}, {0x00, 0x01}};
 

@@ -208,6 +208,16 @@ GLAPI void APIENTRY glStencilFuncSeparateATI(GLenum frontfunc, GLenum backfunc, 
 GLAPI void APIENTRY glStencilOpSeparateATI(GLenum face, GLenum sfail, GLenum dpfail, GLenum dppass);
 GLAPI void APIENTRY glActiveStencilFaceEXT(GLenum face);
 
+// ARB_occlusion_query (api/gl_query_api.cpp).
+GLAPI void APIENTRY glGenQueriesARB(GLsizei n, GLuint* ids);
+GLAPI void APIENTRY glDeleteQueriesARB(GLsizei n, const GLuint* ids);
+GLAPI GLboolean APIENTRY glIsQueryARB(GLuint id);
+GLAPI void APIENTRY glBeginQueryARB(GLenum target, GLuint id);
+GLAPI void APIENTRY glEndQueryARB(GLenum target);
+GLAPI void APIENTRY glGetQueryivARB(GLenum target, GLenum pname, GLint* params);
+GLAPI void APIENTRY glGetQueryObjectivARB(GLuint id, GLenum pname, GLint* params);
+GLAPI void APIENTRY glGetQueryObjectuivARB(GLuint id, GLenum pname, GLuint* params);
+
 }  // extern "C"
 
 namespace glfixed::api {
@@ -311,6 +321,10 @@ const Alias kAliases[] = {
     GLFX_ALIAS(glStencilFuncSeparateATI),
     GLFX_ALIAS(glStencilOpSeparateATI),
     GLFX_ALIAS(glActiveStencilFaceEXT),
+    GLFX_ALIAS(glGenQueriesARB),          GLFX_ALIAS(glDeleteQueriesARB),
+    GLFX_ALIAS(glIsQueryARB),             GLFX_ALIAS(glBeginQueryARB),
+    GLFX_ALIAS(glEndQueryARB),            GLFX_ALIAS(glGetQueryivARB),
+    GLFX_ALIAS(glGetQueryObjectivARB),    GLFX_ALIAS(glGetQueryObjectuivARB),
 
     // Framebuffer objects (api/gl_framebuffer_object_api.cpp).
     GLFX_ALIAS(glIsRenderbuffer),

@@ -139,6 +139,7 @@ ShadeTarget makeShadeTarget(const raster::RasterState& state, Framebuffer& fb,
   s.fog = t.fog ? state.fog : FogState();  // only where the vertices carried the fog distance
   s.alphaTest = state.alphaTest;
   s.depthImage = state.depthImage;
+  s.samplesPassed = state.samplesPassed;
   // The alpha test can discard after the colour: llvmpipe then tests depth late.
   if (s.alphaTest.active()) s.lateDepth = true;
   return s;

@@ -62,6 +62,9 @@ struct ShadeTarget {
 
   // glDrawPixels(GL_DEPTH_COMPONENT): the depth comes from the image.
   DepthImageState depthImage;
+
+  // Occlusion query: the counter of fragments past the depth test (null: none).
+  uint64_t* samplesPassed = nullptr;
 };
 
 ShadeTarget makeShadeTarget(const raster::RasterState& state, Framebuffer& fb,

@@ -186,6 +186,7 @@ primitive::PrimitiveState primitiveState(const Context& ctx, GLenum mode, bool s
     cut(r.pointLineRegion.x0, r.pointLineRegion.y0, r.pointLineRegion.x1, r.pointLineRegion.y1);
   }
   s.userClipPlanes = userClipPlanes(ctx);
+  r.samplesPassed = ctx.queries.samplesPassedCounter();
   return s;
 }
 

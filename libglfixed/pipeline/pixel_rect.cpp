@@ -257,7 +257,8 @@ std::unique_ptr<texture::TextureObject> temporaryTexture() {
 }
 
 // blit_copy_pixels (st_cb_drawpixels.c): without zoom, pixel transfer or
-// a fragment operation that reads or changes what is written, Mesa copies
+// a fragment operation that reads or changes what is written, and without
+// an active occlusion query (measured: its fragments are counted), Mesa copies
 // with a blit when the rectangles do not overlap in the same buffer. A blit
 // writes every channel: the colour write mask is not applied (measured:
 // scene pixel_copy). The rectangles are cut to the read buffer, then the
@@ -272,7 +273,7 @@ bool copyAsBlit(Context& ctx, int srcX, int srcY, int width, int height, long lo
       pm.mapColor || cb.blend || cb.alphaTest || (cb.colorLogicOp && cb.logicOpMode != GL_COPY) ||
       (d.test && (d.func != GL_ALWAYS || d.writeMask)) || ctx.fog.enabled ||
       (ctx.stencil.test && (sf.fail != GL_KEEP || sf.depthFail != GL_KEEP || sf.depthPass != GL_KEEP)) ||
-      fb.drawsIntoBoth(cb.drawBuffer))
+      fb.drawsIntoBoth(cb.drawBuffer) || ctx.queries.active() != 0)  // a blit is not counted
     return false;
   const ColorBuffer& read = fb.read;
   // _mesa_clip_readpixels, then _mesa_clip_drawpixels of the rest.

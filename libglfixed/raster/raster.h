@@ -115,6 +115,10 @@ struct RasterState {
   // glDrawPixels(GL_DEPTH_COMPONENT): fragments take their depth from the
   // image at unit 0's texture coordinates (fragment/depth_image.inc).
   fragment::DepthImageState depthImage;
+
+  // The active GL_SAMPLES_PASSED query's counter (null: none): the fragments
+  // that pass every test are added to it (state/query_objects.h).
+  uint64_t* samplesPassed = nullptr;
 };
 
 // Snaps the three vertices to llvmpipe's 1/256 grid (fixed_point.h) and

@@ -24,6 +24,7 @@
 #include "state/lighting_attrib.h"
 #include "state/list_attrib.h"
 #include "state/matrix_stack.h"
+#include "state/query_objects.h"
 #include "state/vertex_array_attrib.h"
 #include "state/raster_pos.h"
 #include "state/render_mode.h"
@@ -66,6 +67,7 @@ class Context {
   LightingAttrib lighting;
   VertexArrayAttrib vertexArray;
   BufferObjects buffers;
+  QueryObjects queries;  // occlusion queries, in no attribute group
   std::vector<ClientAttribEntry> clientAttribStack;
   // The groups whose stages come later (state/attrib_groups.h).
   FogAttrib fog;

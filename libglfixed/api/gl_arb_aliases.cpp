@@ -218,6 +218,9 @@ GLAPI void APIENTRY glGetQueryivARB(GLenum target, GLenum pname, GLint* params);
 GLAPI void APIENTRY glGetQueryObjectivARB(GLuint id, GLenum pname, GLint* params);
 GLAPI void APIENTRY glGetQueryObjectuivARB(GLuint id, GLenum pname, GLuint* params);
 
+// ARB_multisample (api/gl_multisample_api.cpp).
+GLAPI void APIENTRY glSampleCoverageARB(GLfloat value, GLboolean invert);
+
 }  // extern "C"
 
 namespace glfixed::api {
@@ -325,6 +328,7 @@ const Alias kAliases[] = {
     GLFX_ALIAS(glIsQueryARB),             GLFX_ALIAS(glBeginQueryARB),
     GLFX_ALIAS(glEndQueryARB),            GLFX_ALIAS(glGetQueryivARB),
     GLFX_ALIAS(glGetQueryObjectivARB),    GLFX_ALIAS(glGetQueryObjectuivARB),
+    GLFX_ALIAS(glSampleCoverageARB),
 
     // Framebuffer objects (api/gl_framebuffer_object_api.cpp).
     GLFX_ALIAS(glIsRenderbuffer),

@@ -162,6 +162,9 @@ bool queryHeldState(Context& ctx, GLenum pname, StateValue& out) {
     case GL_MAX_CUBE_MAP_TEXTURE_SIZE: out.set({double(texture::kMaxTextureSize)}); return true;
     // Issue 14, texture environment: Mesa's limit of GL_TEXTURE_LOD_BIAS (not enforced).
     case GL_MAX_TEXTURE_LOD_BIAS: out.set({16.0}); return true;
+    // No surface or framebuffer object has sample buffers (§3.2.1).
+    case GL_SAMPLE_BUFFERS: out.set({0}); return true;
+    case GL_SAMPLES: out.set({0}); return true;
     case GL_SAMPLE_COVERAGE_VALUE: out.set({ctx.multisample.sampleCoverageValue}); return true;
     case GL_SAMPLE_COVERAGE_INVERT: out.set({double(ctx.multisample.sampleCoverageInvert)}); return true;
     default: return false;

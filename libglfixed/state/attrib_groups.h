@@ -116,7 +116,7 @@ struct MultisampleAttrib {
   bool multisample = true;
   bool sampleAlphaToCoverage = false, sampleAlphaToOne = false, sampleCoverage = false;
   float sampleCoverageValue = 1;
-  bool sampleCoverageInvert = false;
+  GLboolean sampleCoverageInvert = GL_FALSE;  // as given: Mesa returns 7 for 7
 };
 
 // The per-unit enables of table 6.25/6.26: also in GL_ENABLE_BIT, which saves

@@ -129,15 +129,17 @@ constexpr Capability kTable[] = {
     entry(GL_STENCIL_TEST, field<&Context::stencil, &StencilAttrib::test>, GL_STENCIL_BUFFER_BIT, 0, kSettable),
     entry(StencilAttrib::kTestTwoSideEXT, field<&Context::stencil, &StencilAttrib::testTwoSide>,
           GL_STENCIL_BUFFER_BIT, 0, kSettable),
+    // Multisample (GL 2.1 §3.2.1, §4.1.3): every surface has GL_SAMPLE_BUFFERS
+    // 0, where these change nothing that is drawn; they are state all the same.
     entry(GL_MULTISAMPLE, field<&Context::multisample, &MultisampleAttrib::multisample>, GL_MULTISAMPLE_BIT,
-          0, kHeld),
+          0, kSettable),
     entry(GL_SAMPLE_ALPHA_TO_COVERAGE,
           field<&Context::multisample, &MultisampleAttrib::sampleAlphaToCoverage>, GL_MULTISAMPLE_BIT, 0,
-          kHeld),
+          kSettable),
     entry(GL_SAMPLE_ALPHA_TO_ONE, field<&Context::multisample, &MultisampleAttrib::sampleAlphaToOne>,
-          GL_MULTISAMPLE_BIT, 0, kHeld),
+          GL_MULTISAMPLE_BIT, 0, kSettable),
     entry(GL_SAMPLE_COVERAGE, field<&Context::multisample, &MultisampleAttrib::sampleCoverage>,
-          GL_MULTISAMPLE_BIT, 0, kHeld),
+          GL_MULTISAMPLE_BIT, 0, kSettable),
     // Texture coordinates (issue 14): an enabled target makes the vertex
     // stage output the unit's coordinates (vertex/texcoord.h); texgen is
     // computed there. Sampling them is the texture stage's.

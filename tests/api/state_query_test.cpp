@@ -490,6 +490,7 @@ TEST_F(StateQueryTest, AdvertisedExtensionsHaveTheirCommands) {
         "glBufferSubDataARB", "glGetBufferSubDataARB", "glMapBufferARB", "glUnmapBufferARB",
         "glGetBufferParameterivARB", "glGetBufferPointervARB"}},
       {"GL_EXT_draw_range_elements", {"glDrawRangeElementsEXT"}},
+      {"GL_ARB_multisample", {"glSampleCoverageARB"}},
       {"GL_ARB_occlusion_query",
        {"glGenQueriesARB", "glDeleteQueriesARB", "glIsQueryARB", "glBeginQueryARB", "glEndQueryARB",
         "glGetQueryivARB", "glGetQueryObjectivARB", "glGetQueryObjectuivARB"}},

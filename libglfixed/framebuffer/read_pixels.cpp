@@ -203,7 +203,8 @@ size_t packedImageBytes(const PixelStoreAttrib& pack, GLsizei width, GLsizei hei
 }
 
 GLenum readPixels(const Framebuffer& fb, const PixelStoreAttrib& pack, GLint x, GLint y, GLsizei width,
-                  GLsizei height, GLenum format, GLenum type, void* pixels, int indexShift, int indexOffset) {
+                  GLsizei height, GLenum format, GLenum type, void* pixels, int indexShift, int indexOffset,
+                  const PixelModeAttrib* transfer, const PixelMaps* maps) {
   if (!isKnownFormat(format) || !isKnownType(type)) return GL_INVALID_ENUM;
   // EXT_packed_depth_stencil: GL_DEPTH_STENCIL only with its types (else an
   // invalid enum), its types only with it (else an invalid operation).
@@ -222,6 +223,9 @@ GLenum readPixels(const Framebuffer& fb, const PixelStoreAttrib& pack, GLint x, 
   if (!fb.hasSurface() || !pixels || width == 0 || height == 0) return GL_NO_ERROR;
 
   const int components = componentsOf(format);
+  const bool colorTransfer =
+      transfer && (transfer->scale != glm::vec4(1) || transfer->bias != glm::vec4(0) || (transfer->mapColor && maps));
+  const bool depthTransfer = transfer && (transfer->depthScale != 1.0f || transfer->depthBias != 0.0f);
   const int componentBytes = isPacked8888(type) || isDepthStencilType(type) ? 1 : bytesOf(type);
   const int pixelBytes = isPacked8888(type)        ? 4
                          : isDepthStencilType(type) ? depthStencilBytes(type)
@@ -273,6 +277,18 @@ GLenum readPixels(const Framebuffer& fb, const PixelStoreAttrib& pack, GLint x, 
       if (format == GL_DEPTH_COMPONENT) {
         const uint32_t d = fb.depth.get(wx, wy);
         const int bits = fb.depth.bits();
+        if (depthTransfer) {  // in float, clamped; unsigned ints truncated (Mesa's FLOAT_TO_UINT)
+          float z = static_cast<float>(d * (1.0 / fb.depth.maxValue()));
+          z = z * transfer->depthScale + transfer->depthBias;
+          z = z > 0.0f ? (z < 1.0f ? z : 1.0f) : 0.0f;
+          if (type == GL_UNSIGNED_INT) {
+            const uint32_t v = static_cast<uint32_t>(double(z) * 4294967295.0);
+            std::memcpy(dst, &v, 4);
+          } else {
+            storeComponent(dst, type, z);
+          }
+          continue;
+        }
         if (type == GL_UNSIGNED_INT) {
           // Replicate the high bits into the low ones: 1.0 reads as 0xffffffff.
           uint32_t v = bits == 16 ? (d << 16) | d : (d << 8) | (d >> 16);
@@ -300,6 +316,14 @@ GLenum readPixels(const Framebuffer& fb, const PixelStoreAttrib& pack, GLint x, 
           rgba[i] = static_cast<uint8_t>(std::nearbyint(f[i] * 255.0f));
         }
         if (fb.read.channels == ChannelType::kRGB565) fb.read.read(wx, wy, rgba);
+      }
+      if (colorTransfer) {  // §3.6.5: scale and bias, then the colour maps
+        for (int i = 0; i < 4; ++i) {
+          f[i] = f[i] * transfer->scale[i] + transfer->bias[i];
+          if (transfer->mapColor && maps) f[i] = (*maps)[GL_PIXEL_MAP_R_TO_R + i].atColor(f[i]);
+          if (type != GL_FLOAT) f[i] = f[i] > 0.0f ? (f[i] < 1.0f ? f[i] : 1.0f) : 0.0f;
+          rgba[i] = static_cast<uint8_t>(std::nearbyint(std::clamp(f[i], 0.0f, 1.0f) * 255.0f));
+        }
       }
       if (isPacked8888(type)) {
         // 8_8_8_8: the first component in the highest byte; _REV: in the lowest.

@@ -265,11 +265,12 @@ void storeTexel(TexelFormat format, const float rgba[4], uint8_t* texel) {
 
 void unpackImage(const ClientLayout& layout, const uint8_t* pixels, GLenum format, GLenum type,
                  const PixelModeAttrib& transfer, int width, int height, int depth, TextureImage& image,
-                 int x, int y, int z) {
+                 int x, int y, int z, const PixelMaps* maps) {
   const TexelFormatInfo& info = texelFormatInfo(image.format);
   const bool isDepth = format == GL_DEPTH_COMPONENT;
+  const bool mapColor = !isDepth && maps && transfer.mapColor;
   const bool scaleBias = isDepth ? (transfer.depthScale != 1 || transfer.depthBias != 0)
-                                 : (transfer.scale != glm::vec4(1) || transfer.bias != glm::vec4(0));
+                                 : (transfer.scale != glm::vec4(1) || transfer.bias != glm::vec4(0) || mapColor);
   const bool fromBytes = !scaleBias && (type == GL_UNSIGNED_BYTE || type == GL_UNSIGNED_INT_8_8_8_8 ||
                                         type == GL_UNSIGNED_INT_8_8_8_8_REV);
   const int components = componentsOf(format);
@@ -289,6 +290,8 @@ void unpackImage(const ClientLayout& layout, const uint8_t* pixels, GLenum forma
             rgba[0] = rgba[0] * transfer.depthScale + transfer.depthBias;
           } else {
             for (int n = 0; n < 4; ++n) rgba[n] = rgba[n] * transfer.scale[n] + transfer.bias[n];
+            if (mapColor)
+              for (int n = 0; n < 4; ++n) rgba[n] = (*maps)[GL_PIXEL_MAP_R_TO_R + n].atColor(rgba[n]);
           }
         }
         float channels[4];

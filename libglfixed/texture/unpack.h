@@ -12,6 +12,7 @@
 
 #include "state/attrib_groups.h"
 #include "state/attribs.h"
+#include "state/pixel_maps.h"
 #include "texture/texture_object.h"
 
 namespace glfixed::texture {
@@ -43,10 +44,12 @@ ClientLayout packLayout(const PixelStoreAttrib& store, int width, int height, GL
 
 // Unpacks a width x height x depth client image into `image` at (x, y, z),
 // converted to the image's stored format, pixel transfer's scale and bias
-// applied (§3.6.5). `pixels` is at least layout.extent(...) bytes.
+// applied (§3.6.5), then with `maps` and GL_MAP_COLOR the colour maps
+// (PixelMap::atColor, Mesa's texstore). `pixels` is at least
+// layout.extent(...) bytes.
 void unpackImage(const ClientLayout& layout, const uint8_t* pixels, GLenum format, GLenum type,
                  const PixelModeAttrib& transfer, int width, int height, int depth, TextureImage& image,
-                 int x, int y, int z);
+                 int x, int y, int z, const PixelMaps* maps = nullptr);
 
 // Packs a whole level into client memory (glGetTexImage, §6.1.4): the stored
 // components as R, G, B, A (luminance to R, intensity to R, table 6.1).

@@ -289,50 +289,19 @@ void mapColorAsMesa(const PixelModeAttrib& pm, const PixelMaps& maps, texture::T
 }
 
 // glDrawPixels(GL_COLOR_INDEX) in RGBA mode as Mesa draws it (measured): each
-// index (integers as they are, floats truncated, negative ones wrapped as
-// unsigned; GL_BITMAP a bit each) through GL_PIXEL_MAP_I_TO_R .. I_TO_A,
+// index (texture::clientColorIndex) through GL_PIXEL_MAP_I_TO_R .. I_TO_A,
 // masked by their sizes (§3.6.5). Mesa's st_DrawPixels unpacks the image
 // with the pixel transfer switched off, so GL_INDEX_SHIFT and GL_INDEX_OFFSET
 // are not applied, nor the colour scale, bias or maps its shader would add.
 void unpackColorIndices(const texture::ClientLayout& layout, const uint8_t* pixels, GLenum type,
                         const PixelMaps& maps, texture::TextureImage& image) {
-  auto element = [&](const uint8_t* p, int bytes) {
-    uint8_t b[4] = {0, 0, 0, 0};
-    for (int k = 0; k < bytes; ++k) b[k] = p[layout.swapBytes ? bytes - 1 - k : k];
-    uint32_t v = 0;
-    std::memcpy(&v, b, 4);  // little-endian, as the bytes are
-    return v;
-  };
-  for (int j = 0; j < image.height; ++j) {
-    const uint8_t* row = pixels + layout.start + size_t(j) * layout.rowStride;
+  for (int j = 0; j < image.height; ++j)
     for (int i = 0; i < image.width; ++i) {
-      const uint8_t* p = row + size_t(i) * layout.groupBytes;
-      uint32_t index = 0;
-      switch (type) {
-        case GL_BITMAP: {
-          const int bit = layout.skipBits + i;
-          index = (row[bit / 8] >> (7 - bit % 8)) & 1u;
-          break;
-        }
-        case GL_UNSIGNED_BYTE: index = *p; break;
-        case GL_BYTE: index = static_cast<uint32_t>(static_cast<int8_t>(*p)); break;
-        case GL_UNSIGNED_SHORT: index = element(p, 2); break;
-        case GL_SHORT: index = static_cast<uint32_t>(static_cast<int16_t>(element(p, 2))); break;
-        case GL_FLOAT: {
-          const uint32_t bits = element(p, 4);
-          float f;
-          std::memcpy(&f, &bits, 4);
-          // (GLuint) f as x86-64 converts it: through a 64-bit integer.
-          index = f > -9.2e18f && f < 9.2e18f ? static_cast<uint32_t>(static_cast<int64_t>(f)) : 0u;
-          break;
-        }
-        default: index = element(p, 4); break;  // GL_UNSIGNED_INT, GL_INT
-      }
+      const uint32_t index = texture::clientColorIndex(layout, pixels, type, i, j);
       const float rgba[4] = {maps[GL_PIXEL_MAP_I_TO_R].atIndex(index), maps[GL_PIXEL_MAP_I_TO_G].atIndex(index),
                              maps[GL_PIXEL_MAP_I_TO_B].atIndex(index), maps[GL_PIXEL_MAP_I_TO_A].atIndex(index)};
       texture::storeTexel(image.format, rgba, texelAt(image, i, j));
     }
-  }
 }
 
 std::unique_ptr<texture::TextureObject> temporaryTexture() {

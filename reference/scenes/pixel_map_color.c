@@ -2,7 +2,7 @@
  * lit sphere: an RGBA image mapped at several zooms, with scale and bias, in
  * a display list and copied; colour-index images (bytes, shorts, floats,
  * GL_BITMAP) through the I_TO_R .. I_TO_A maps; a texture stored through the
- * maps; glReadPixels with the maps, scale and bias, drawn back. Mesa maps red
+ * maps, and a colour-index texture; glReadPixels with the maps, scale and bias, drawn back. Mesa maps red
  * and green but takes blue and alpha from a second sample of the image
  * (reference/MESA_FACTS.md "Pixel maps and pixel transfer"). */
 #include <GL/glu.h>
@@ -145,10 +145,10 @@ int main(int argc, char **argv)
     glWindowPos2i(86, 84); glPixelZoom(2, 2);
     glDrawPixels(IW, IH, GL_COLOR_INDEX, GL_UNSIGNED_BYTE, ci);
     glPixelZoom(1, 1);
-    /* 32 bits a row: Mesa reads GL_BITMAP indices as one run of bits, rows not
-     * padded to bytes, and a colour-index image cut at the window's edge from
-     * memory past its rows; neither is drawn here. */
-    glWindowPos2i(140, 84); glDrawPixels(32, IH, GL_COLOR_INDEX, GL_BITMAP, bits);
+    /* 29 bits a row: Mesa reads GL_BITMAP indices as one run of bits, rows not
+     * padded to bytes. (A colour-index image cut at the window's edge Mesa
+     * reads from memory past its rows: not drawn here.) */
+    glWindowPos2i(140, 84); glDrawPixels(29, IH, GL_COLOR_INDEX, GL_BITMAP, bits);
 
     /* A texture stored through the maps, on a quad. */
     glPixelTransferi(GL_MAP_COLOR, GL_TRUE);
@@ -171,6 +171,18 @@ int main(int argc, char **argv)
     glTexCoord2f(1, 0); glVertex2f(50, 120);
     glTexCoord2f(1, 1); glVertex2f(50, 152);
     glTexCoord2f(0, 1); glVertex2f(2, 152);
+    glEnd();
+    /* A colour-index texture: shifted and offset when stored. */
+    glPixelTransferi(GL_INDEX_SHIFT, 1);
+    glPixelTransferi(GL_INDEX_OFFSET, 2);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, IW, IH, 0, GL_COLOR_INDEX, GL_UNSIGNED_BYTE, ci);
+    glPixelTransferi(GL_INDEX_SHIFT, 0);
+    glPixelTransferi(GL_INDEX_OFFSET, 0);
+    glBegin(GL_QUADS);
+    glTexCoord2f(0, 0); glVertex2f(100, 120);
+    glTexCoord2f(1, 0); glVertex2f(148, 120);
+    glTexCoord2f(1, 1); glVertex2f(148, 152);
+    glTexCoord2f(0, 1); glVertex2f(100, 152);
     glEnd();
     glDisable(GL_TEXTURE_2D);
 

@@ -460,5 +460,75 @@ TEST_F(PixelMapTest, ColourIndexImagesGoThroughTheIndexMaps) {
   }
 }
 
+const std::array<int, 4> kIndexColour[4] = {
+    {26, 255, 51, 255}, {128, 178, 102, 255}, {230, 76, 153, 128}, {255, 0, 204, 64}};
+
+void SetIndexMaps() {
+  const GLfloat r[4] = {0.1f, 0.5f, 0.9f, 1}, g[4] = {1, 0.7f, 0.3f, 0}, b[4] = {0.2f, 0.4f, 0.6f, 0.8f},
+                a[4] = {1, 1, 0.5f, 0.25f};
+  glPixelMapfv(GL_PIXEL_MAP_I_TO_R, 4, r);
+  glPixelMapfv(GL_PIXEL_MAP_I_TO_G, 4, g);
+  glPixelMapfv(GL_PIXEL_MAP_I_TO_B, 4, b);
+  glPixelMapfv(GL_PIXEL_MAP_I_TO_A, 4, a);
+}
+
+TEST_F(PixelMapTest, ColourIndexTexturesAreShiftedOffsetAndMapped) {
+  SetIndexMaps();
+  GLuint t;
+  glGenTextures(1, &t);
+  glBindTexture(GL_TEXTURE_2D, t);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  const GLubyte idx[4] = {0, 1, 2, 3};
+  GLubyte o[4][4];
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 4, 1, 0, GL_COLOR_INDEX, GL_UNSIGNED_BYTE, idx);
+  glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, o);
+  for (int i = 0; i < 4; ++i)
+    EXPECT_EQ((std::array<int, 4>{o[i][0], o[i][1], o[i][2], o[i][3]}), kIndexColour[i]) << i;
+  // Unlike glDrawPixels, texstore shifts and offsets the index; no scale or colour map.
+  glPixelTransferi(GL_INDEX_SHIFT, 1);
+  glPixelTransferi(GL_INDEX_OFFSET, 1);
+  glPixelTransferf(GL_RED_SCALE, 0.5f);
+  glPixelTransferi(GL_MAP_COLOR, 1);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 4, 1, 0, GL_COLOR_INDEX, GL_UNSIGNED_BYTE, idx);
+  glPixelTransferi(GL_INDEX_SHIFT, 0);
+  glPixelTransferi(GL_INDEX_OFFSET, 0);
+  ResetTransfer();
+  glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, o);
+  for (int i = 0; i < 4; ++i)
+    EXPECT_EQ((std::array<int, 4>{o[i][0], o[i][1], o[i][2], o[i][3]}), kIndexColour[(i * 2 + 1) & 3]) << i;
+  glDeleteTextures(1, &t);
+  EXPECT_NO_GL_ERROR();
+}
+
+// Mesa reads GL_BITMAP colour indices as one run of bits: a row starts at
+// bit row * width, not at the next (aligned) byte.
+TEST_F(PixelMapTest, BitmapIndexRowsAreOneRunOfBits) {
+  SetIndexMaps();
+  GLuint t;
+  glGenTextures(1, &t);
+  glBindTexture(GL_TEXTURE_2D, t);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  const GLubyte padded[8] = {0xA0, 0, 0, 0, 0x40, 0, 0, 0};
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 4, 2, 0, GL_COLOR_INDEX, GL_BITMAP, padded);
+  GLubyte o[24][4];
+  glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, o);
+  const int expected4x2[8] = {1, 0, 1, 0, 0, 0, 0, 0};
+  for (int i = 0; i < 8; ++i) EXPECT_EQ(o[i][0], kIndexColour[expected4x2[i]][0]) << i;
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  const GLubyte bits[4] = {0xA5, 0x3C, 0xF0, 0x0F};
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 12, 2, 0, GL_COLOR_INDEX, GL_BITMAP, bits);
+  glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, o);
+  for (int i = 0; i < 24; ++i) EXPECT_EQ(o[i][0], kIndexColour[(bits[i / 8] >> (7 - i % 8)) & 1][0]) << i;
+  glDeleteTextures(1, &t);
+  PixelProjection();
+  ClearBlack();
+  glRasterPos2i(0, 0);
+  glDrawPixels(12, 2, GL_COLOR_INDEX, GL_BITMAP, bits);
+  const std::vector<unsigned char> p = ReadAll();
+  for (int i = 0; i < 24; ++i)
+    EXPECT_EQ(At(p, i % 12, i / 12), kIndexColour[(bits[i / 8] >> (7 - i % 8)) & 1]) << i;
+  EXPECT_NO_GL_ERROR();
+}
+
 }  // namespace
 }  // namespace glfx_test

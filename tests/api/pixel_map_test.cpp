@@ -409,6 +409,34 @@ TEST_F(PixelMapTest, TexImageMapsColourAsTheSpecRounds) {
   EXPECT_NO_GL_ERROR();
 }
 
+TEST_F(PixelMapTest, CopyTexImageMapsColourAsTexImageDoes) {
+  PixelProjection();
+  ClearBlack();
+  const GLubyte px[4][4] = {{0, 255, 0, 0}, {51, 204, 101, 151}, {153, 102, 47, 197}, {255, 0, 249, 243}};
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glRasterPos2i(0, 0);
+  glDrawPixels(4, 1, GL_RGBA, GL_UNSIGNED_BYTE, px);
+  const GLfloat invert[2] = {1, 0};
+  glPixelMapfv(GL_PIXEL_MAP_R_TO_R, 2, invert);
+  glPixelMapfv(GL_PIXEL_MAP_G_TO_G, 3, kGreenMap);
+  glPixelMapfv(GL_PIXEL_MAP_B_TO_B, 2, invert);
+  glPixelTransferi(GL_MAP_COLOR, 1);
+  GLuint t;
+  glGenTextures(1, &t);
+  glBindTexture(GL_TEXTURE_2D, t);
+  glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 0, 0, 4, 1, 0);
+  ResetTransfer();
+  GLubyte o[4][4];
+  glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, o);
+  const int expected[4][4] = {{255, 204, 255, 0}, {255, 204, 255, 0}, {0, 128, 255, 0}, {0, 51, 0, 0}};
+  for (int i = 0; i < 4; ++i)
+    EXPECT_EQ((std::array<int, 4>{o[i][0], o[i][1], o[i][2], o[i][3]}),
+              (std::array<int, 4>{expected[i][0], expected[i][1], expected[i][2], expected[i][3]}))
+        << i;
+  glDeleteTextures(1, &t);
+  EXPECT_NO_GL_ERROR();
+}
+
 TEST_F(PixelMapTest, ColourIndexImagesGoThroughTheIndexMaps) {
   PixelProjection();
   ClearBlack();

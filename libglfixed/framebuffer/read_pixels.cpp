@@ -186,6 +186,45 @@ void storeComponent(uint8_t* dst, GLenum type, float f) {
   }
 }
 
+// One colour component as Mesa packs it (measured; reference/MESA_FACTS.md
+// "Pixel maps and pixel transfer"): signed types c * (2^(b-1) - 1) rounded
+// (the GL 3 rule); 32-bit types from a byte of the buffer exactly (the byte
+// replicated, or b / 255 * INT_MAX rounded), and from a float (pixel transfer
+// applied) in float precision. `byte` is the buffer's byte, or -1.
+void storeColorComponent(uint8_t* dst, GLenum type, float f, int byte) {
+  switch (type) {
+    case GL_BYTE: *reinterpret_cast<int8_t*>(dst) = static_cast<int8_t>(std::lround(double(f) * 127.0)); return;
+    case GL_SHORT: {
+      const int16_t v = static_cast<int16_t>(std::lround(double(f) * 32767.0));
+      std::memcpy(dst, &v, 2);
+      return;
+    }
+    case GL_UNSIGNED_INT: {
+      uint32_t v;
+      if (byte >= 0) {
+        v = static_cast<uint32_t>(byte) * 0x01010101u;
+      } else {
+        const float x = f * 4294967295.0f;
+        v = x >= 4294967295.0f ? 0xffffffffu : x > 0.0f ? static_cast<uint32_t>(x) : 0u;
+      }
+      std::memcpy(dst, &v, 4);
+      return;
+    }
+    case GL_INT: {
+      int32_t v;
+      if (byte >= 0) {
+        v = static_cast<int32_t>(std::lround(byte / 255.0 * 2147483647.0));
+      } else {
+        const float x = f * 2147483647.0f;
+        v = x >= 2147483647.0f ? 2147483647 : x <= -2147483647.0f ? -2147483647 : static_cast<int32_t>(x);
+      }
+      std::memcpy(dst, &v, 4);
+      return;
+    }
+    default: storeComponent(dst, type, f); return;
+  }
+}
+
 }  // namespace
 
 size_t packedImageBytes(const PixelStoreAttrib& pack, GLsizei width, GLsizei height, GLenum format, GLenum type) {
@@ -321,7 +360,9 @@ GLenum readPixels(const Framebuffer& fb, const PixelStoreAttrib& pack, GLint x, 
         for (int i = 0; i < 4; ++i) {
           f[i] = f[i] * transfer->scale[i] + transfer->bias[i];
           if (transfer->mapColor && maps) f[i] = (*maps)[GL_PIXEL_MAP_R_TO_R + i].atColor(f[i]);
-          if (type != GL_FLOAT) f[i] = f[i] > 0.0f ? (f[i] < 1.0f ? f[i] : 1.0f) : 0.0f;
+          // Clamped to the type's range: [0, 1], [-1, 1] for signed types, not for floats.
+          const float low = type == GL_BYTE || type == GL_SHORT || type == GL_INT ? -1.0f : 0.0f;
+          if (type != GL_FLOAT) f[i] = f[i] > low ? (f[i] < 1.0f ? f[i] : 1.0f) : low;
           rgba[i] = static_cast<uint8_t>(std::nearbyint(std::clamp(f[i], 0.0f, 1.0f) * 255.0f));
         }
       }
@@ -357,7 +398,28 @@ GLenum readPixels(const Framebuffer& fb, const PixelStoreAttrib& pack, GLint x, 
         case GL_RGBA: std::memcpy(out, f, sizeof f); break;
         case GL_BGRA: out[0] = f[2]; out[1] = f[1]; out[2] = f[0]; out[3] = f[3]; break;
       }
-      for (int i = 0; i < components; ++i) storeComponent(dst + i * componentBytes, type, out[i]);
+      // The buffer's byte of each component, for the exact 32-bit conversions.
+      int outBytes[4] = {-1, -1, -1, -1};
+      if (bytes && !colorTransfer) {
+        switch (format) {
+          case GL_RED: outBytes[0] = rgba[0]; break;
+          case GL_GREEN: outBytes[0] = rgba[1]; break;
+          case GL_BLUE: outBytes[0] = rgba[2]; break;
+          case GL_ALPHA: outBytes[0] = rgba[3]; break;
+          case GL_RGB: case GL_RGBA: for (int i = 0; i < 4; ++i) outBytes[i] = rgba[i]; break;
+          case GL_BGR: case GL_BGRA:
+            outBytes[0] = rgba[2]; outBytes[1] = rgba[1]; outBytes[2] = rgba[0]; outBytes[3] = rgba[3];
+            break;
+          default: break;  // luminance: a sum, through float
+        }
+      }
+      // (16-bit and float buffers without transfer: as before, not measured.)
+      for (int i = 0; i < components; ++i) {
+        if (bytes || colorTransfer)
+          storeColorComponent(dst + i * componentBytes, type, out[i], outBytes[i]);
+        else
+          storeComponent(dst + i * componentBytes, type, out[i]);
+      }
     }
   }
   return GL_NO_ERROR;

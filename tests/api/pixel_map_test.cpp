@@ -360,6 +360,35 @@ TEST_F(PixelMapTest, ReadPixelsScalesBiasesAndMaps) {
   EXPECT_NO_GL_ERROR();
 }
 
+TEST_F(PixelMapTest, ReadPixelsIntoSignedAndWideTypes) {
+  PixelProjection();
+  ClearBlack();
+  const GLubyte px[4] = {100, 150, 200, 50};
+  glRasterPos2i(0, 0);
+  glDrawPixels(1, 1, GL_RGBA, GL_UNSIGNED_BYTE, px);
+  GLshort s[4];
+  GLbyte b[4];
+  GLuint u[4];
+  GLint i[4];
+  glReadPixels(0, 0, 1, 1, GL_RGBA, GL_SHORT, s);
+  EXPECT_EQ((std::array<int, 4>{s[0], s[1], s[2], s[3]}), (std::array<int, 4>{12850, 19275, 25700, 6425}));
+  glReadPixels(0, 0, 1, 1, GL_RGBA, GL_BYTE, b);
+  EXPECT_EQ((std::array<int, 4>{b[0], b[1], b[2], b[3]}), (std::array<int, 4>{50, 75, 100, 25}));
+  glReadPixels(0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_INT, u);
+  EXPECT_EQ(u[0], 1684300900u);
+  EXPECT_EQ(u[1], 2526451350u);
+  glReadPixels(0, 0, 1, 1, GL_RGBA, GL_INT, i);
+  EXPECT_EQ(i[0], 842150450);
+  EXPECT_EQ(i[1], 1263225675);
+  glPixelTransferf(GL_RED_BIAS, -0.5f);
+  glReadPixels(0, 0, 1, 1, GL_RGBA, GL_SHORT, s);
+  EXPECT_EQ(s[0], -3534);  // clamped to [-1, 1] only
+  glReadPixels(0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_INT, u);
+  EXPECT_EQ(u[1], 2526451456u);  // through float with the transfer on
+  ResetTransfer();
+  EXPECT_NO_GL_ERROR();
+}
+
 TEST_F(PixelMapTest, ReadPixelsScalesAndBiasesDepth) {
   glClearDepth(0.5);
   glClear(GL_DEPTH_BUFFER_BIT);

@@ -133,6 +133,19 @@ bool queryHeldState(Context& ctx, GLenum pname, StateValue& out) {
     case GL_POLYGON_OFFSET_UNITS: out.set({ctx.polygon.offsetUnits}); return true;
     case GL_READ_BUFFER: out.set({double(ctx.pixelMode.readBuffer)}); return true;
     case GL_MAP_COLOR: out.set({double(ctx.pixelMode.mapColor)}); return true;
+    case GL_PIXEL_MAP_I_TO_I_SIZE:
+    case GL_PIXEL_MAP_S_TO_S_SIZE:
+    case GL_PIXEL_MAP_I_TO_R_SIZE:
+    case GL_PIXEL_MAP_I_TO_G_SIZE:
+    case GL_PIXEL_MAP_I_TO_B_SIZE:
+    case GL_PIXEL_MAP_I_TO_A_SIZE:
+    case GL_PIXEL_MAP_R_TO_R_SIZE:
+    case GL_PIXEL_MAP_G_TO_G_SIZE:
+    case GL_PIXEL_MAP_B_TO_B_SIZE:
+    case GL_PIXEL_MAP_A_TO_A_SIZE:
+      out.set({double(ctx.pixelMaps.map[pname - GL_PIXEL_MAP_I_TO_I_SIZE].size)});
+      return true;
+    case GL_MAX_PIXEL_MAP_TABLE: out.set({double(kMaxPixelMapTable)}); return true;
     case GL_MAP_STENCIL: out.set({double(ctx.pixelMode.mapStencil)}); return true;
     case GL_INDEX_SHIFT: out.set({double(ctx.pixelMode.indexShift)}); return true;
     case GL_INDEX_OFFSET: out.set({double(ctx.pixelMode.indexOffset)}); return true;

@@ -281,8 +281,7 @@ void drawPixelsUnpacked(GLsizei width, GLsizei height, GLenum format, GLenum typ
   if (!ctx->rasterPos.valid) return;
   if (ctx->renderMode.mode != GL_RENDER) return pixelsInFeedbackOrSelect(*ctx, GL_DRAW_PIXEL_TOKEN);
   if (width == 0 || height == 0) return;
-  if (format == GL_STENCIL_INDEX || format == GL_COLOR_INDEX)
-    return ctx->recordError(GL_INVALID_OPERATION);  // not implemented yet
+  if (format == GL_STENCIL_INDEX) return ctx->recordError(GL_INVALID_OPERATION);  // not implemented yet
   pipeline::PixelImage image;
   image.width = width;
   image.height = height;
@@ -321,7 +320,8 @@ GLAPI void APIENTRY glDrawPixels(GLsizei width, GLsizei height, GLenum format, G
   // unpacks the image at compile time, §5.4), and replayed from the copy.
   const bool compiling = api::listCompiler(ctx) && !api::listCompiler(ctx)->insideBeginEnd();
   if (!ctx->insideBeginEnd && width > 0 && height > 0 &&
-      texture::checkFormatAndType(format, type) == GL_NO_ERROR && type != GL_BITMAP) {
+      texture::checkFormatAndType(format, type) == GL_NO_ERROR &&
+      (type != GL_BITMAP || format == GL_COLOR_INDEX)) {
     PixelStoreAttrib store = ctx->pixelStore;
     store.unpackSkipImages = 0;  // a 2D image
     const texture::ClientLayout layout = texture::unpackLayout(store, width, height, format, type);

@@ -66,7 +66,7 @@ void copyInto(Context& ctx, TextureImage& image, int xo, int yo, int zo, int x, 
   api::beginStateChange(ctx, GL_TEXTURE_BIT);
   texture::unpackImage(layout, pixels.data(), depth ? GL_DEPTH_COMPONENT : GL_RGBA,
                        depth ? GL_UNSIGNED_INT : GL_UNSIGNED_BYTE, ctx.pixelMode, width, height, 1, image, xo,
-                       yo, zo);
+                       yo, zo, &ctx.pixelMaps);  // the colour maps too (measured)
 }
 
 bool hasSourceBuffer(const Framebuffer& fb, bool depth) {

@@ -82,7 +82,8 @@ void texImage(int dims, GLenum target, GLint level, GLint internalFormat, GLsize
     texture::ClientLayout inner = layout;  // skip the border texels
     inner.start += size_t(b) * layout.groupBytes + (dims >= 2 ? size_t(b) * layout.rowStride : 0) +
                    (dims == 3 ? size_t(b) * layout.imageStride : 0);
-    texture::unpackImage(inner, source, format, type, ctx->pixelMode, w, h, d, image, 0, 0, 0);
+    texture::unpackImage(inner, source, format, type, ctx->pixelMode, w, h, d, image, 0, 0, 0,
+                         &ctx->pixelMaps);
   }
   maybeGenerateMipmaps(*ctx, object, t, level);
 }
@@ -112,7 +113,8 @@ void texSubImage(int dims, GLenum target, GLint level, GLint x, GLint y, GLint z
   if (error) return ctx->recordError(error);
   if (!source || width == 0 || height == 0 || depth == 0) return;
   api::beginStateChange(*ctx, GL_TEXTURE_BIT);
-  texture::unpackImage(layout, source, format, type, ctx->pixelMode, width, height, depth, image, x, y, z);
+  texture::unpackImage(layout, source, format, type, ctx->pixelMode, width, height, depth, image, x, y, z,
+                       &ctx->pixelMaps);
   maybeGenerateMipmaps(*ctx, object, t, level);
 }
 

@@ -186,6 +186,45 @@ void storeComponent(uint8_t* dst, GLenum type, float f) {
   }
 }
 
+// One colour component as Mesa packs it (measured; reference/MESA_FACTS.md
+// "Pixel maps and pixel transfer"): signed types c * (2^(b-1) - 1) rounded
+// (the GL 3 rule); 32-bit types from a byte of the buffer exactly (the byte
+// replicated, or b / 255 * INT_MAX rounded), and from a float (pixel transfer
+// applied) in float precision. `byte` is the buffer's byte, or -1.
+void storeColorComponent(uint8_t* dst, GLenum type, float f, int byte) {
+  switch (type) {
+    case GL_BYTE: *reinterpret_cast<int8_t*>(dst) = static_cast<int8_t>(std::lround(double(f) * 127.0)); return;
+    case GL_SHORT: {
+      const int16_t v = static_cast<int16_t>(std::lround(double(f) * 32767.0));
+      std::memcpy(dst, &v, 2);
+      return;
+    }
+    case GL_UNSIGNED_INT: {
+      uint32_t v;
+      if (byte >= 0) {
+        v = static_cast<uint32_t>(byte) * 0x01010101u;
+      } else {
+        const float x = f * 4294967295.0f;
+        v = x >= 4294967295.0f ? 0xffffffffu : x > 0.0f ? static_cast<uint32_t>(x) : 0u;
+      }
+      std::memcpy(dst, &v, 4);
+      return;
+    }
+    case GL_INT: {
+      int32_t v;
+      if (byte >= 0) {
+        v = static_cast<int32_t>(std::lround(byte / 255.0 * 2147483647.0));
+      } else {
+        const float x = f * 2147483647.0f;
+        v = x >= 2147483647.0f ? 2147483647 : x <= -2147483647.0f ? -2147483647 : static_cast<int32_t>(x);
+      }
+      std::memcpy(dst, &v, 4);
+      return;
+    }
+    default: storeComponent(dst, type, f); return;
+  }
+}
+
 }  // namespace
 
 size_t packedImageBytes(const PixelStoreAttrib& pack, GLsizei width, GLsizei height, GLenum format, GLenum type) {
@@ -203,7 +242,8 @@ size_t packedImageBytes(const PixelStoreAttrib& pack, GLsizei width, GLsizei hei
 }
 
 GLenum readPixels(const Framebuffer& fb, const PixelStoreAttrib& pack, GLint x, GLint y, GLsizei width,
-                  GLsizei height, GLenum format, GLenum type, void* pixels, int indexShift, int indexOffset) {
+                  GLsizei height, GLenum format, GLenum type, void* pixels, int indexShift, int indexOffset,
+                  const PixelModeAttrib* transfer, const PixelMaps* maps) {
   if (!isKnownFormat(format) || !isKnownType(type)) return GL_INVALID_ENUM;
   // EXT_packed_depth_stencil: GL_DEPTH_STENCIL only with its types (else an
   // invalid enum), its types only with it (else an invalid operation).
@@ -222,6 +262,9 @@ GLenum readPixels(const Framebuffer& fb, const PixelStoreAttrib& pack, GLint x, 
   if (!fb.hasSurface() || !pixels || width == 0 || height == 0) return GL_NO_ERROR;
 
   const int components = componentsOf(format);
+  const bool colorTransfer =
+      transfer && (transfer->scale != glm::vec4(1) || transfer->bias != glm::vec4(0) || (transfer->mapColor && maps));
+  const bool depthTransfer = transfer && (transfer->depthScale != 1.0f || transfer->depthBias != 0.0f);
   const int componentBytes = isPacked8888(type) || isDepthStencilType(type) ? 1 : bytesOf(type);
   const int pixelBytes = isPacked8888(type)        ? 4
                          : isDepthStencilType(type) ? depthStencilBytes(type)
@@ -273,6 +316,18 @@ GLenum readPixels(const Framebuffer& fb, const PixelStoreAttrib& pack, GLint x, 
       if (format == GL_DEPTH_COMPONENT) {
         const uint32_t d = fb.depth.get(wx, wy);
         const int bits = fb.depth.bits();
+        if (depthTransfer) {  // in float, clamped; unsigned ints truncated (Mesa's FLOAT_TO_UINT)
+          float z = static_cast<float>(d * (1.0 / fb.depth.maxValue()));
+          z = z * transfer->depthScale + transfer->depthBias;
+          z = z > 0.0f ? (z < 1.0f ? z : 1.0f) : 0.0f;
+          if (type == GL_UNSIGNED_INT) {
+            const uint32_t v = static_cast<uint32_t>(double(z) * 4294967295.0);
+            std::memcpy(dst, &v, 4);
+          } else {
+            storeComponent(dst, type, z);
+          }
+          continue;
+        }
         if (type == GL_UNSIGNED_INT) {
           // Replicate the high bits into the low ones: 1.0 reads as 0xffffffff.
           uint32_t v = bits == 16 ? (d << 16) | d : (d << 8) | (d >> 16);
@@ -300,6 +355,16 @@ GLenum readPixels(const Framebuffer& fb, const PixelStoreAttrib& pack, GLint x, 
           rgba[i] = static_cast<uint8_t>(std::nearbyint(f[i] * 255.0f));
         }
         if (fb.read.channels == ChannelType::kRGB565) fb.read.read(wx, wy, rgba);
+      }
+      if (colorTransfer) {  // §3.6.5: scale and bias, then the colour maps
+        for (int i = 0; i < 4; ++i) {
+          f[i] = f[i] * transfer->scale[i] + transfer->bias[i];
+          if (transfer->mapColor && maps) f[i] = (*maps)[GL_PIXEL_MAP_R_TO_R + i].atColor(f[i]);
+          // Clamped to the type's range: [0, 1], [-1, 1] for signed types, not for floats.
+          const float low = type == GL_BYTE || type == GL_SHORT || type == GL_INT ? -1.0f : 0.0f;
+          if (type != GL_FLOAT) f[i] = f[i] > low ? (f[i] < 1.0f ? f[i] : 1.0f) : low;
+          rgba[i] = static_cast<uint8_t>(std::nearbyint(std::clamp(f[i], 0.0f, 1.0f) * 255.0f));
+        }
       }
       if (isPacked8888(type)) {
         // 8_8_8_8: the first component in the highest byte; _REV: in the lowest.
@@ -333,7 +398,28 @@ GLenum readPixels(const Framebuffer& fb, const PixelStoreAttrib& pack, GLint x, 
         case GL_RGBA: std::memcpy(out, f, sizeof f); break;
         case GL_BGRA: out[0] = f[2]; out[1] = f[1]; out[2] = f[0]; out[3] = f[3]; break;
       }
-      for (int i = 0; i < components; ++i) storeComponent(dst + i * componentBytes, type, out[i]);
+      // The buffer's byte of each component, for the exact 32-bit conversions.
+      int outBytes[4] = {-1, -1, -1, -1};
+      if (bytes && !colorTransfer) {
+        switch (format) {
+          case GL_RED: outBytes[0] = rgba[0]; break;
+          case GL_GREEN: outBytes[0] = rgba[1]; break;
+          case GL_BLUE: outBytes[0] = rgba[2]; break;
+          case GL_ALPHA: outBytes[0] = rgba[3]; break;
+          case GL_RGB: case GL_RGBA: for (int i = 0; i < 4; ++i) outBytes[i] = rgba[i]; break;
+          case GL_BGR: case GL_BGRA:
+            outBytes[0] = rgba[2]; outBytes[1] = rgba[1]; outBytes[2] = rgba[0]; outBytes[3] = rgba[3];
+            break;
+          default: break;  // luminance: a sum, through float
+        }
+      }
+      // (16-bit and float buffers without transfer: as before, not measured.)
+      for (int i = 0; i < components; ++i) {
+        if (bytes || colorTransfer)
+          storeColorComponent(dst + i * componentBytes, type, out[i], outBytes[i]);
+        else
+          storeComponent(dst + i * componentBytes, type, out[i]);
+      }
     }
   }
   return GL_NO_ERROR;

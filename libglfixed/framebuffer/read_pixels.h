@@ -8,6 +8,7 @@
 #include "framebuffer/framebuffer.h"
 #include "state/attrib_groups.h"
 #include "state/attribs.h"
+#include "state/pixel_maps.h"
 
 namespace glfixed {
 
@@ -36,9 +37,13 @@ size_t packedImageBytes(const PixelStoreAttrib& pack, GLsizei width, GLsizei hei
                         GLenum type);
 
 // GL_STENCIL_INDEX values are shifted and offset by GL_INDEX_SHIFT and
-// GL_INDEX_OFFSET (§3.6.5).
+// GL_INDEX_OFFSET (§3.6.5). With `transfer` (and `maps`), colour goes through
+// the scale, bias and GL_MAP_COLOR, depth through GL_DEPTH_SCALE and _BIAS
+// (§4.3.2), as Mesa's _mesa_readpixels does: then clamped to [0, 1], except
+// colour read as GL_FLOAT.
 GLenum readPixels(const Framebuffer& fb, const PixelStoreAttrib& pack, GLint x, GLint y, GLsizei width,
                   GLsizei height, GLenum format, GLenum type, void* pixels, int indexShift = 0,
-                  int indexOffset = 0);
+                  int indexOffset = 0, const PixelModeAttrib* transfer = nullptr,
+                  const PixelMaps* maps = nullptr);
 
 }  // namespace glfixed

@@ -246,6 +246,64 @@ void drawTexturedQuad(Context& ctx, const texture::TextureObject* object,
   intoDrawBuffers(ctx, [&](Framebuffer& fb) { primitive::drawPrimitives(ps, v, fb); });
 }
 
+uint8_t* texelAt(texture::TextureImage& image, int i, int j) {
+  return image.texels.data() + size_t(j) * image.rowStride +
+         size_t(i) * texture::texelFormatInfo(image.format).bytesPerTexel;
+}
+
+// GL_MAP_COLOR as Mesa's glDrawPixels and glCopyPixels apply it, in the
+// fragment shader after the scale and bias (nir_lower_drawpixels on llvmpipe;
+// measured, reference/MESA_FACTS.md "Pixel maps"): the colour c looks red and
+// green up in a 256 x 256 RGBA8 texture of the maps, NEAREST and clamped:
+// column floor(c * 256) holds entry floor(column * size / 256). Blue and
+// alpha come from the second lookup, which samples the image texture itself
+// instead of the maps, at (b, a): that texel's red and green. Every texel of
+// `image` (the unscaled image, row 0 where t = 0) is replaced by what the
+// shader computes from it, in RGBA16, which holds those values exactly.
+void mapColorAsMesa(const PixelModeAttrib& pm, const PixelMaps& maps, texture::TextureImage& image) {
+  const int width = image.width, height = image.height;
+  std::vector<float> raw(size_t(width) * height * 4);
+  for (int j = 0; j < height; ++j)
+    for (int i = 0; i < width; ++i)
+      texture::decodeTexelFloat(image.format, image.texel(i, j, 0), &raw[(size_t(j) * width + i) * 4]);
+  auto column = [](float c, int size) {  // NEAREST, CLAMP_TO_EDGE; NaN: 0
+    const float x = std::floor(c * static_cast<float>(size));
+    return x >= static_cast<float>(size) ? size - 1 : x > 0.0f ? static_cast<int>(x) : 0;
+  };
+  auto entry = [&](GLenum map, float c) {
+    const PixelMap& m = maps[map];
+    const float v = m.values[size_t(column(c, 256) * m.size / 256)];
+    return std::nearbyint(v * 255.0f) / 255.0f;  // the RGBA8 texel
+  };
+  if (!texture::defineImage(image, GL_RGBA16, texture::TexelFormat::RGBA16, width, height, 1)) return;
+  for (int j = 0; j < height; ++j)
+    for (int i = 0; i < width; ++i) {
+      const float* r = &raw[(size_t(j) * width + i) * 4];
+      float c[4];
+      for (int k = 0; k < 4; ++k) c[k] = r[k] * pm.scale[k] + pm.bias[k];
+      const float* second = &raw[(size_t(column(c[3], height)) * width + column(c[2], width)) * 4];
+      const float out[4] = {entry(GL_PIXEL_MAP_R_TO_R, c[0]), entry(GL_PIXEL_MAP_G_TO_G, c[1]), second[0],
+                            second[1]};
+      texture::storeTexel(texture::TexelFormat::RGBA16, out, texelAt(image, i, j));
+    }
+}
+
+// glDrawPixels(GL_COLOR_INDEX) in RGBA mode as Mesa draws it (measured): each
+// index (texture::clientColorIndex) through GL_PIXEL_MAP_I_TO_R .. I_TO_A,
+// masked by their sizes (§3.6.5). Mesa's st_DrawPixels unpacks the image
+// with the pixel transfer switched off, so GL_INDEX_SHIFT and GL_INDEX_OFFSET
+// are not applied, nor the colour scale, bias or maps its shader would add.
+void unpackColorIndices(const texture::ClientLayout& layout, const uint8_t* pixels, GLenum type,
+                        const PixelMaps& maps, texture::TextureImage& image) {
+  for (int j = 0; j < image.height; ++j)
+    for (int i = 0; i < image.width; ++i) {
+      const uint32_t index = texture::clientColorIndex(layout, pixels, type, i, j);
+      const float rgba[4] = {maps[GL_PIXEL_MAP_I_TO_R].atIndex(index), maps[GL_PIXEL_MAP_I_TO_G].atIndex(index),
+                             maps[GL_PIXEL_MAP_I_TO_B].atIndex(index), maps[GL_PIXEL_MAP_I_TO_A].atIndex(index)};
+      texture::storeTexel(image.format, rgba, texelAt(image, i, j));
+    }
+}
+
 std::unique_ptr<texture::TextureObject> temporaryTexture() {
   auto object = std::make_unique<texture::TextureObject>();
   object->target = GL_TEXTURE_2D;
@@ -342,6 +400,11 @@ void drawColorPixels(Context& ctx, const PixelImage& image) {
     if (skipX >= endX || skipY >= endY) return;
     layout.start +=
         static_cast<size_t>(skipX) * layout.groupBytes + static_cast<size_t>(skipY) * layout.rowStride;
+    if (layout.bitmap) {  // GL_BITMAP: skipped columns are bits
+      layout.skipBits += static_cast<int>(skipX);
+      layout.start += static_cast<size_t>(layout.skipBits / 8);
+      layout.skipBits %= 8;
+    }
     width = static_cast<int>(endX - skipX);
     height = static_cast<int>(endY - skipY);
     x += skipX;
@@ -351,19 +414,27 @@ void drawColorPixels(Context& ctx, const PixelImage& image) {
   width = std::min(width, texture::kMaxTextureSize);
   height = std::min(height, texture::kMaxTextureSize);
   if (!image.pixels) return ctx.recordError(GL_OUT_OF_MEMORY);  // make_texture fails on a null image
-  const bool scaleBias = pm.scale != glm::vec4(1) || pm.bias != glm::vec4(0);
-  const GLint internalFormat = drawPixelsInternalFormat(image.type, scaleBias);
+  const bool colorIndex = image.format == GL_COLOR_INDEX;
+  const bool mapColor = pm.mapColor && !colorIndex;
+  const bool scaleBias = (pm.scale != glm::vec4(1) || pm.bias != glm::vec4(0)) && !pm.mapColor && !colorIndex;
+  const GLint internalFormat = colorIndex ? GL_RGBA8 : drawPixelsInternalFormat(image.type, scaleBias);
   auto object = temporaryTexture();
   texture::TextureImage& texImage = object->face[0][0];
   if (!texture::defineImage(texImage, internalFormat,
                             texture::chooseTexelFormat(internalFormat, image.format, image.type), width,
                             height, 1))
     return ctx.recordError(GL_OUT_OF_MEMORY);
-  PixelModeAttrib transfer;  // only the scale and bias
-  transfer.scale = pm.scale;
-  transfer.bias = pm.bias;
-  texture::unpackImage(layout, image.pixels, image.format, image.type, transfer, width, height, 1, texImage,
-                       0, 0, 0);
+  PixelModeAttrib transfer;  // only the scale and bias, or nothing when the maps apply them
+  if (scaleBias) {
+    transfer.scale = pm.scale;
+    transfer.bias = pm.bias;
+  }
+  if (colorIndex)
+    unpackColorIndices(layout, image.pixels, image.type, ctx.pixelMaps, texImage);
+  else
+    texture::unpackImage(layout, image.pixels, image.format, image.type, transfer, width, height, 1, texImage,
+                         0, 0, 0);
+  if (mapColor) mapColorAsMesa(pm, ctx.pixelMaps, texImage);
   drawTexturedQuad(ctx, object.get(), nullptr, x, y, width, height, false);
 }
 
@@ -384,7 +455,7 @@ void copyColorPixels(Context& ctx, int srcX, int srcY, int width, int height) {
   width = std::min(width, texture::kMaxTextureSize);
   height = std::min(height, texture::kMaxTextureSize);
   const PixelModeAttrib& pm = ctx.pixelMode;
-  const bool scaleBias = pm.scale != glm::vec4(1) || pm.bias != glm::vec4(0);
+  const bool scaleBias = (pm.scale != glm::vec4(1) || pm.bias != glm::vec4(0)) && !pm.mapColor;
   auto object = temporaryTexture();
   texture::TextureImage& texImage = object->face[0][0];
   const GLint internalFormat = scaleBias ? GL_RGBA16 : GL_RGBA8;
@@ -413,6 +484,7 @@ void copyColorPixels(Context& ctx, int srcX, int srcY, int width, int height) {
       }
     }
   }
+  if (pm.mapColor) mapColorAsMesa(pm, ctx.pixelMaps, texImage);
   drawTexturedQuad(ctx, object.get(), nullptr, x, y, width, height, true);
 }
 

@@ -24,6 +24,7 @@
 #include "state/lighting_attrib.h"
 #include "state/list_attrib.h"
 #include "state/matrix_stack.h"
+#include "state/pixel_maps.h"
 #include "state/query_objects.h"
 #include "state/vertex_array_attrib.h"
 #include "state/raster_pos.h"
@@ -83,6 +84,7 @@ class Context {
   AttribStack attribStack;  // glPushAttrib/glPopAttrib
   EvalAttrib eval;
   EvalMaps evalMaps;  // in no attribute group (table 6.39)
+  PixelMaps pixelMaps;  // glPixelMap, in no attribute group (table 6.27)
   ListAttrib list;
   MatrixStack modelview{kMaxModelviewStackDepth};
   MatrixStack projection{kMaxProjectionStackDepth};

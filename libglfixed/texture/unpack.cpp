@@ -70,6 +70,7 @@ ClientLayout layoutOf(int alignment, int rowLength, int skipPixels, int skipRows
                       int skipImages, bool swap, int width, int height, GLenum format, GLenum type) {
   ClientLayout l;
   const size_t rowPixels = static_cast<size_t>(rowLength > 0 ? rowLength : width);
+  l.rowPixels = static_cast<int>(rowPixels);
   const size_t align = static_cast<size_t>(alignment);
   if (type == GL_BITMAP) {  // §3.6.4: rows of bits, padded to the alignment
     l.bitmap = true;
@@ -263,13 +264,36 @@ void storeTexel(TexelFormat format, const float rgba[4], uint8_t* texel) {
   storeChannels(format, c, false, texel);
 }
 
+uint32_t clientColorIndex(const ClientLayout& layout, const uint8_t* pixels, GLenum type, int i, int j) {
+  if (layout.bitmap) {
+    const size_t bit = layout.start * 8 + size_t(2 * layout.skipBits) + size_t(j) * size_t(layout.rowPixels) + size_t(i);
+    return (pixels[bit / 8] >> (7 - bit % 8)) & 1u;
+  }
+  const uint8_t* p = pixels + layout.start + size_t(j) * layout.rowStride + size_t(i) * layout.groupBytes;
+  switch (type) {
+    case GL_UNSIGNED_BYTE: return *p;
+    case GL_BYTE: return static_cast<uint32_t>(static_cast<int8_t>(*p));
+    case GL_UNSIGNED_SHORT: return readElement(p, 2, layout.swapBytes);
+    case GL_SHORT: return static_cast<uint32_t>(static_cast<int16_t>(readElement(p, 2, layout.swapBytes)));
+    case GL_FLOAT: {
+      const uint32_t bits = readElement(p, 4, layout.swapBytes);
+      float f;
+      std::memcpy(&f, &bits, 4);
+      // (GLuint) f as x86-64 converts it: through a 64-bit integer.
+      return f > -9.2e18f && f < 9.2e18f ? static_cast<uint32_t>(static_cast<int64_t>(f)) : 0u;
+    }
+    default: return readElement(p, 4, layout.swapBytes);  // GL_UNSIGNED_INT, GL_INT
+  }
+}
+
 void unpackImage(const ClientLayout& layout, const uint8_t* pixels, GLenum format, GLenum type,
                  const PixelModeAttrib& transfer, int width, int height, int depth, TextureImage& image,
-                 int x, int y, int z) {
+                 int x, int y, int z, const PixelMaps* maps) {
   const TexelFormatInfo& info = texelFormatInfo(image.format);
   const bool isDepth = format == GL_DEPTH_COMPONENT;
+  const bool mapColor = !isDepth && maps && transfer.mapColor;
   const bool scaleBias = isDepth ? (transfer.depthScale != 1 || transfer.depthBias != 0)
-                                 : (transfer.scale != glm::vec4(1) || transfer.bias != glm::vec4(0));
+                                 : (transfer.scale != glm::vec4(1) || transfer.bias != glm::vec4(0) || mapColor);
   const bool fromBytes = !scaleBias && (type == GL_UNSIGNED_BYTE || type == GL_UNSIGNED_INT_8_8_8_8 ||
                                         type == GL_UNSIGNED_INT_8_8_8_8_REV);
   const int components = componentsOf(format);
@@ -281,6 +305,19 @@ void unpackImage(const ClientLayout& layout, const uint8_t* pixels, GLenum forma
                      size_t(y + j) * image.rowStride + size_t(x) * info.bytesPerTexel;
       for (int i = 0; i < width; ++i, out += info.bytesPerTexel) {
         float c[4] = {0, 0, 0, 0}, rgba[4];
+        if (format == GL_COLOR_INDEX) {  // §3.6.5: index arithmetic, then index to RGBA
+          ClientLayout slice = layout;
+          slice.start += size_t(k) * layout.imageStride;
+          uint32_t index = clientColorIndex(slice, pixels, type, i, j);
+          const int shift = transfer.indexShift;
+          index = (shift >= 0 ? index << (shift & 31) : index >> ((-shift) & 31)) +
+                  static_cast<uint32_t>(transfer.indexOffset);
+          for (int n = 0; n < 4; ++n) rgba[n] = maps ? (*maps)[GL_PIXEL_MAP_I_TO_R + n].atIndex(index) : 0.0f;
+          float channels[4];
+          rgbaToChannels(info.baseFormat, rgba, channels);
+          storeChannels(image.format, channels, false, out);
+          continue;
+        }
         if (!layout.bitmap)
           readComponents(row + size_t(i) * layout.groupBytes, type, components, layout.swapBytes, !scaleBias, c);
         toRGBA(format, c, rgba);
@@ -289,6 +326,8 @@ void unpackImage(const ClientLayout& layout, const uint8_t* pixels, GLenum forma
             rgba[0] = rgba[0] * transfer.depthScale + transfer.depthBias;
           } else {
             for (int n = 0; n < 4; ++n) rgba[n] = rgba[n] * transfer.scale[n] + transfer.bias[n];
+            if (mapColor)
+              for (int n = 0; n < 4; ++n) rgba[n] = (*maps)[GL_PIXEL_MAP_R_TO_R + n].atColor(rgba[n]);
           }
         }
         float channels[4];

@@ -12,6 +12,7 @@
 
 #include "state/attrib_groups.h"
 #include "state/attribs.h"
+#include "state/pixel_maps.h"
 #include "texture/texture_object.h"
 
 namespace glfixed::texture {
@@ -34,6 +35,7 @@ struct ClientLayout {
   bool swapBytes = false;
   bool bitmap = false;
   int skipBits = 0;  // GL_BITMAP: skip pixels within the first byte
+  int rowPixels = 0;  // the row length, or the width
   // Bytes from the start of the client memory to the end of the last pixel
   // of a width x height x depth image (0 for an empty image).
   size_t extent(int width, int height, int depth) const;
@@ -43,10 +45,21 @@ ClientLayout packLayout(const PixelStoreAttrib& store, int width, int height, GL
 
 // Unpacks a width x height x depth client image into `image` at (x, y, z),
 // converted to the image's stored format, pixel transfer's scale and bias
-// applied (§3.6.5). `pixels` is at least layout.extent(...) bytes.
+// applied (§3.6.5), then with `maps` and GL_MAP_COLOR the colour maps
+// (PixelMap::atColor, Mesa's texstore). GL_COLOR_INDEX images: each index
+// shifted and offset (GL_INDEX_SHIFT, _OFFSET), then through `maps`'
+// I_TO_R .. I_TO_A (no scale, bias or colour maps; Mesa's texstore). `pixels` is at least
+// layout.extent(...) bytes.
 void unpackImage(const ClientLayout& layout, const uint8_t* pixels, GLenum format, GLenum type,
                  const PixelModeAttrib& transfer, int width, int height, int depth, TextureImage& image,
-                 int x, int y, int z);
+                 int x, int y, int z, const PixelMaps* maps = nullptr);
+
+// Colour index (i, j) of a client image (§3.6.4) as Mesa extracts it: the
+// integer (floats truncated through a 64-bit integer, negative values
+// wrapped as unsigned). GL_BITMAP as Mesa reads it (measured): the rows as
+// one run of bits, not padded to bytes, pixel (i, j) bit 2 * skipBits +
+// j * rowPixels + i from the first byte.
+uint32_t clientColorIndex(const ClientLayout& layout, const uint8_t* pixels, GLenum type, int i, int j);
 
 // Packs a whole level into client memory (glGetTexImage, §6.1.4): the stored
 // components as R, G, B, A (luminance to R, intensity to R, table 6.1).

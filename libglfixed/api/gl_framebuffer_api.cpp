@@ -116,8 +116,8 @@ GLAPI void APIENTRY glReadPixels(GLint x, GLint y, GLsizei width, GLsizei height
     if (bytes == 0) return;
     pixels = b->data.data() + offset;
   }
-  GLenum error = readPixels(ctx->framebuffer, ctx->pixelStore, x, y, width, height, format, type, pixels,
-                            ctx->pixelMode.indexShift, ctx->pixelMode.indexOffset);
+  GLenum error =
+      readPixels(ctx->framebuffer, ctx->pixelStore, x, y, width, height, format, type, pixels, ctx->pixelMode);
   if (error != GL_NO_ERROR) ctx->recordError(error);
 }
 

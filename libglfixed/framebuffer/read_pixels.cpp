@@ -1,5 +1,7 @@
 #include "framebuffer/read_pixels.h"
 
+#include "framebuffer/stencil_index.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -203,7 +205,7 @@ size_t packedImageBytes(const PixelStoreAttrib& pack, GLsizei width, GLsizei hei
 }
 
 GLenum readPixels(const Framebuffer& fb, const PixelStoreAttrib& pack, GLint x, GLint y, GLsizei width,
-                  GLsizei height, GLenum format, GLenum type, void* pixels, int indexShift, int indexOffset) {
+                  GLsizei height, GLenum format, GLenum type, void* pixels, const PixelModeAttrib& transfer) {
   if (!isKnownFormat(format) || !isKnownType(type)) return GL_INVALID_ENUM;
   // EXT_packed_depth_stencil: GL_DEPTH_STENCIL only with its types (else an
   // invalid enum), its types only with it (else an invalid operation).
@@ -251,11 +253,8 @@ GLenum readPixels(const Framebuffer& fb, const PixelStoreAttrib& pack, GLint x, 
       const int wx = x + col;
       uint8_t* dst = dstRow + static_cast<size_t>(col) * pixelBytes;
       if (stencil) {
-        // GL 2.1 §4.3.2: the index shifted and offset; Mesa does it on bytes.
-        uint32_t s = fb.depth.getStencil(wx, wy);
-        if (indexShift || indexOffset)
-          s = static_cast<uint8_t>((indexShift >= 0 ? s << indexShift : s >> -indexShift) + indexOffset);
-        storeStencil(dst, type, s);
+        // GL 2.1 §4.3.2: the index through the pixel transfer, kept to 8 bits.
+        storeStencil(dst, type, transferStencilIndex(transfer, fb.depth.getStencil(wx, wy)));
         continue;
       }
       if (depthStencil) {

@@ -35,10 +35,10 @@ void clearStencil(Framebuffer& fb, uint32_t value, uint32_t writeMask, const Pix
 size_t packedImageBytes(const PixelStoreAttrib& pack, GLsizei width, GLsizei height, GLenum format,
                         GLenum type);
 
-// GL_STENCIL_INDEX values are shifted and offset by GL_INDEX_SHIFT and
-// GL_INDEX_OFFSET (§3.6.5).
+// GL_STENCIL_INDEX values go through the stencil index transfer of
+// `transfer` (§3.6.5; framebuffer/stencil_index.h).
 GLenum readPixels(const Framebuffer& fb, const PixelStoreAttrib& pack, GLint x, GLint y, GLsizei width,
-                  GLsizei height, GLenum format, GLenum type, void* pixels, int indexShift = 0,
-                  int indexOffset = 0);
+                  GLsizei height, GLenum format, GLenum type, void* pixels,
+                  const PixelModeAttrib& transfer = PixelModeAttrib());
 
 }  // namespace glfixed

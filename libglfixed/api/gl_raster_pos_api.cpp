@@ -180,8 +180,30 @@ bool isDrawPixelsFormat(GLenum format) {
   }
 }
 
+bool isPackedPixelType(GLenum type) {
+  switch (type) {
+    case GL_UNSIGNED_BYTE_3_3_2:
+    case GL_UNSIGNED_BYTE_2_3_3_REV:
+    case GL_UNSIGNED_SHORT_5_6_5:
+    case GL_UNSIGNED_SHORT_5_6_5_REV:
+    case GL_UNSIGNED_SHORT_4_4_4_4:
+    case GL_UNSIGNED_SHORT_4_4_4_4_REV:
+    case GL_UNSIGNED_SHORT_5_5_5_1:
+    case GL_UNSIGNED_SHORT_1_5_5_5_REV:
+    case GL_UNSIGNED_INT_8_8_8_8:
+    case GL_UNSIGNED_INT_8_8_8_8_REV:
+    case GL_UNSIGNED_INT_10_10_10_2:
+    case GL_UNSIGNED_INT_2_10_10_10_REV: return true;
+    default: return false;
+  }
+}
+
 // GL 2.1 §3.6.4 and table 3.8: the error a format/type pair raises, if any.
 GLenum drawPixelsTypeError(const Context& ctx, GLenum format, GLenum type) {
+  // GL_RG (ARB_texture_rg) is no format here, but with a packed type it is
+  // the invalid operation Mesa records (piglit draw-pixels checks it).
+  constexpr GLenum kRG = 0x8227;
+  if (format == kRG) return isPackedPixelType(type) ? GL_INVALID_OPERATION : GL_INVALID_ENUM;
   if (!isDrawPixelsFormat(format)) return GL_INVALID_ENUM;
   // EXT_packed_depth_stencil: GL_DEPTH_STENCIL only with its type (else an
   // invalid enum), the type only with it (else an invalid operation).

@@ -649,6 +649,8 @@ TEST_F(StencilPixelsTest, FormatAndTypeErrors) {
   EXPECT_GL_ERROR(GL_INVALID_OPERATION);
   glDrawPixels(1, 1, GL_STENCIL_INDEX, 0x1234, &v);
   EXPECT_GL_ERROR(GL_INVALID_ENUM);
+  glDrawPixels(1, 1, 0x8227 /* GL_RG */, GL_UNSIGNED_SHORT_5_6_5, &v);  // piglit draw-pixels
+  EXPECT_GL_ERROR(GL_INVALID_OPERATION);
   glCopyPixels(0, 0, 1, 1, GL_STENCIL_INDEX);
   EXPECT_GL_ERROR(GL_INVALID_ENUM);
   glCopyPixels(0, 0, -1, 1, GL_STENCIL);

@@ -676,5 +676,33 @@ TEST(StencilPixelsBufferTest, WithoutAStencilBufferIsInvalidOperation) {
   EXPECT_NO_GL_ERROR();
 }
 
+TEST(StencilPixelsBufferTest, DepthCopyOnASixteenBitBufferKeepsTheValues) {
+  PixelsContext c(16, 0);
+  ASSERT_TRUE(c.ok());
+  ASSERT_EQ(GetInt(GL_DEPTH_BITS), 16);
+  GLushort z[8];
+  for (int i = 0; i < 8; ++i) z[i] = static_cast<GLushort>(1000 + 7919 * i);
+  glClearDepth(1);
+  glClear(GL_DEPTH_BUFFER_BIT);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_ALWAYS);
+  glWindowPos2i(0, 0);
+  glDrawPixels(8, 1, GL_DEPTH_COMPONENT, GL_UNSIGNED_SHORT, z);
+  GLushort before[8], after[8];
+  glReadPixels(0, 0, 8, 1, GL_DEPTH_COMPONENT, GL_UNSIGNED_SHORT, before);
+  glPixelZoom(1, 2);
+  glWindowPos2i(0, 4);
+  glCopyPixels(0, 0, 8, 1, GL_DEPTH);
+  glPixelZoom(1, 1);
+  glDisable(GL_DEPTH_TEST);
+  EXPECT_NO_GL_ERROR();
+  for (int row = 4; row < 6; ++row) {
+    glReadPixels(0, row, 8, 1, GL_DEPTH_COMPONENT, GL_UNSIGNED_SHORT, after);
+    for (int i = 0; i < 8; ++i) EXPECT_EQ(after[i], before[i]) << i << "," << row;
+  }
+  glCopyPixels(0, 0, 1, 1, GL_STENCIL);
+  EXPECT_GL_ERROR(GL_INVALID_OPERATION);
+}
+
 }  // namespace
 }  // namespace glfx_test

@@ -322,7 +322,8 @@ void drawPixelsUnpacked(GLsizei width, GLsizei height, GLenum format, GLenum typ
   image.layout = layout;
   image.pixels = bytes;
   if (format == GL_DEPTH_COMPONENT) return pipeline::drawDepthPixels(*ctx, image);
-  if (format == GL_STENCIL_INDEX || format == GL_DEPTH_STENCIL) return pipeline::drawStencilPixels(*ctx, image);
+  if (format == GL_STENCIL_INDEX || format == GL_DEPTH_STENCIL)
+    return pipeline::drawStencilPixels(*ctx, image);
   pipeline::drawColorPixels(*ctx, image);
 }
 
@@ -387,7 +388,8 @@ GLAPI void APIENTRY glCopyPixels(GLint x, GLint y, GLsizei width, GLsizei height
   if (type != GL_COLOR && type != GL_DEPTH && type != GL_STENCIL && type != GL_DEPTH_STENCIL)
     return ctx->recordError(GL_INVALID_ENUM);
   const DepthBuffer& db = ctx->framebuffer.depth;
-  if ((type == GL_DEPTH || type == GL_DEPTH_STENCIL) && db.bits() == 0) return ctx->recordError(GL_INVALID_OPERATION);
+  if ((type == GL_DEPTH || type == GL_DEPTH_STENCIL) && db.bits() == 0)
+    return ctx->recordError(GL_INVALID_OPERATION);
   if ((type == GL_STENCIL || type == GL_DEPTH_STENCIL) && db.stencilBits() == 0)
     return ctx->recordError(GL_INVALID_OPERATION);
   // No read buffer (glReadBuffer(GL_NONE)): Mesa's _mesa_source_buffer_exists.

@@ -521,7 +521,7 @@ uint8_t unpackedStencilIndex(const PixelImage& image, int i, int j) {
   const uint8_t* p = row + static_cast<size_t>(i) * l.groupBytes;
   const int bytes = image.type == GL_UNSIGNED_BYTE || image.type == GL_BYTE     ? 1
                     : image.type == GL_UNSIGNED_SHORT || image.type == GL_SHORT ? 2
-                                                                                 : 4;
+                                                                                : 4;
   uint8_t b[4];
   for (int k = 0; k < bytes; ++k) b[k] = p[l.swapBytes ? bytes - 1 - k : k];
   if (bytes == 1) return b[0];
@@ -581,8 +581,8 @@ void drawStencilPixels(Context& ctx, const PixelImage& image) {
       const size_t at = static_cast<size_t>(j) * width + i;
       stencil[at] = unpackedStencilIndex(image, i, j);
       if (withDepth) {  // GL_UNSIGNED_INT_24_8: the depth in the top 24 bits, no scale or bias (measured)
-        const uint8_t* p = image.pixels + image.layout.start + static_cast<size_t>(j) * image.layout.rowStride +
-                           static_cast<size_t>(i) * 4;
+        const uint8_t* p = image.pixels + image.layout.start +
+                           static_cast<size_t>(j) * image.layout.rowStride + static_cast<size_t>(i) * 4;
         uint32_t v;
         std::memcpy(&v, p, 4);
         if (image.layout.swapBytes) v = __builtin_bswap32(v);
@@ -627,7 +627,8 @@ void copyDepthStencilPixels(Context& ctx, int srcX, int srcY, int width, int hei
       if (col >= width) break;
       const size_t at = static_cast<size_t>(row) * width + col;
       if (copyDepth) depth[at] = storedDepthAsFloat(db, db.get(static_cast<int>(sx), static_cast<int>(sy)));
-      if (copyStencil) stencil[at] = static_cast<uint8_t>(db.getStencil(static_cast<int>(sx), static_cast<int>(sy)));
+      if (copyStencil)
+        stencil[at] = static_cast<uint8_t>(db.getStencil(static_cast<int>(sx), static_cast<int>(sy)));
     }
   }
   fragment::DepthImageState d;

@@ -149,8 +149,8 @@ TEST_F(StencilPixelsTest, DrawKeepsTheLowEightBitsOfEveryIndexType) {
   DrawStencil(0, 4, 8, 1, GL_UNSIGNED_INT, ui);
   EXPECT_EQ(Stencil(0, 4, 8, 1), (std::vector<int>{0x01, 0xff, 0xff, 0x00, 0xff, 0x00, 0x78, 0x04}));
   // Floats truncated toward zero, then the low bits; far-off ones and NaN 0.
-  const GLfloat f[16] = {1.4f,  1.5f,   2.5f,     -1.0f,    255.9f, 256.0f, 300.0f, 0.6f,
-                         1e10f, -1e10f, NAN, 65535.5f, 65536.0f, 3.99f, -0.5f,  7.5f};
+  const GLfloat f[16] = {1.4f,  1.5f,   2.5f, -1.0f,    255.9f,   256.0f, 300.0f, 0.6f,
+                         1e10f, -1e10f, NAN,  65535.5f, 65536.0f, 3.99f,  -0.5f,  7.5f};
   DrawStencil(0, 5, 8, 2, GL_FLOAT, f);
   EXPECT_EQ(Stencil(0, 5, 8, 2), (std::vector<int>{0x01, 0x01, 0x02, 0xff, 0xff, 0x00, 0x2c, 0x00,  //
                                                    0x00, 0x00, 0x00, 0xff, 0x00, 0x03, 0x00, 0x07}));
@@ -429,7 +429,8 @@ TEST_F(StencilPixelsTest, StencilCopiedFromOutsideTheBufferIsZero) {
   EXPECT_EQ(Stencil(24, 24, 2, 2), (std::vector<int>{0xa5, 0xa5, 0xa5, 0xa5}));
   glWindowPos2i(40, 40);
   glCopyPixels(62, 62, 4, 4, GL_STENCIL);
-  EXPECT_EQ(Stencil(40, 40, 4, 4), (std::vector<int>{0xa5, 0xa5, 0, 0, 0xa5, 0xa5, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}));
+  EXPECT_EQ(Stencil(40, 40, 4, 4),
+            (std::vector<int>{0xa5, 0xa5, 0, 0, 0xa5, 0xa5, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}));
 }
 
 TEST(StencilPixelsBufferTest, StencilWithoutDepthDrawsAndCopies) {
@@ -496,8 +497,9 @@ TEST_F(StencilPixelsTest, CopyDepthGoesThroughTheDepthTestWithTheCurrentColour) 
   glWindowPos2i(10, 1);
   glColor4f(0.8f, 0.4f, 0.6f, 1);
   glCopyPixels(1, 1, 3, 2, GL_DEPTH);
-  EXPECT_EQ(Depth(10, 1, 3, 2), (std::vector<unsigned>{FilledDepth(1, 1), FilledDepth(2, 1), FilledDepth(3, 1),
-                                                       FilledDepth(1, 2), FilledDepth(2, 2), FilledDepth(3, 2)}));
+  EXPECT_EQ(Depth(10, 1, 3, 2),
+            (std::vector<unsigned>{FilledDepth(1, 1), FilledDepth(2, 1), FilledDepth(3, 1), FilledDepth(1, 2),
+                                   FilledDepth(2, 2), FilledDepth(3, 2)}));
   EXPECT_EQ(c_.red(11, 2), 204);
   // GL_GREATER against the destination.
   FillDepth();
@@ -505,8 +507,9 @@ TEST_F(StencilPixelsTest, CopyDepthGoesThroughTheDepthTestWithTheCurrentColour) 
   glDepthFunc(GL_GREATER);
   glWindowPos2i(1, 1);
   glCopyPixels(2, 1, 3, 2, GL_DEPTH);
-  EXPECT_EQ(Depth(0, 1, 6, 1), (std::vector<unsigned>{FilledDepth(0, 1), FilledDepth(2, 1), FilledDepth(3, 1),
-                                                      FilledDepth(4, 1), FilledDepth(4, 1), FilledDepth(5, 1)}));
+  EXPECT_EQ(Depth(0, 1, 6, 1),
+            (std::vector<unsigned>{FilledDepth(0, 1), FilledDepth(2, 1), FilledDepth(3, 1), FilledDepth(4, 1),
+                                   FilledDepth(4, 1), FilledDepth(5, 1)}));
   EXPECT_EQ(c_.red(1, 1), 204);
   glDisable(GL_DEPTH_TEST);
 }
@@ -522,7 +525,8 @@ TEST_F(StencilPixelsTest, CopyDepthTakesNoScaleOrBiasButTheMaskAndTheStencil) {
   glCopyPixels(1, 1, 3, 1, GL_DEPTH);
   glPixelTransferf(GL_DEPTH_SCALE, 1);
   glPixelTransferf(GL_DEPTH_BIAS, 0);
-  EXPECT_EQ(Depth(10, 1, 3, 1), (std::vector<unsigned>{FilledDepth(1, 1), FilledDepth(2, 1), FilledDepth(3, 1)}));
+  EXPECT_EQ(Depth(10, 1, 3, 1),
+            (std::vector<unsigned>{FilledDepth(1, 1), FilledDepth(2, 1), FilledDepth(3, 1)}));
   FillDepth();
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_ALWAYS);
@@ -555,8 +559,9 @@ TEST_F(StencilPixelsTest, CopyDepthZoomedOverlappingAndFromOutside) {
   glWindowPos2i(10, 1);
   glCopyPixels(1, 1, 3, 1, GL_DEPTH);
   glPixelZoom(1, 1);
-  EXPECT_EQ(Depth(10, 1, 6, 1), (std::vector<unsigned>{FilledDepth(1, 1), FilledDepth(1, 1), FilledDepth(2, 1),
-                                                       FilledDepth(2, 1), FilledDepth(3, 1), FilledDepth(3, 1)}));
+  EXPECT_EQ(Depth(10, 1, 6, 1),
+            (std::vector<unsigned>{FilledDepth(1, 1), FilledDepth(1, 1), FilledDepth(2, 1), FilledDepth(2, 1),
+                                   FilledDepth(3, 1), FilledDepth(3, 1)}));
   FillDepth();
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_ALWAYS);
@@ -574,7 +579,8 @@ TEST_F(StencilPixelsTest, CopyDepthZoomedOverlappingAndFromOutside) {
   glWindowPos2i(3, 0);
   glCopyPixels(-2, -1, 4, 4, GL_DEPTH);
   glDisable(GL_DEPTH_TEST);
-  EXPECT_EQ(Depth(3, 0, 4, 2), (std::vector<unsigned>{0, 0, 0, 0, 0, 0, FilledDepth(0, 0), FilledDepth(1, 0)}));
+  EXPECT_EQ(Depth(3, 0, 4, 2),
+            (std::vector<unsigned>{0, 0, 0, 0, 0, 0, FilledDepth(0, 0), FilledDepth(1, 0)}));
 }
 
 TEST_F(StencilPixelsTest, CopyDepthStencilWritesBothAndNoColour) {
@@ -585,7 +591,8 @@ TEST_F(StencilPixelsTest, CopyDepthStencilWritesBothAndNoColour) {
   glWindowPos2i(10, 1);
   glCopyPixels(1, 1, 3, 2, GL_DEPTH_STENCIL);  // the depth test off
   EXPECT_NO_GL_ERROR();
-  EXPECT_EQ(Depth(10, 1, 3, 1), (std::vector<unsigned>{FilledDepth(1, 1), FilledDepth(2, 1), FilledDepth(3, 1)}));
+  EXPECT_EQ(Depth(10, 1, 3, 1),
+            (std::vector<unsigned>{FilledDepth(1, 1), FilledDepth(2, 1), FilledDepth(3, 1)}));
   EXPECT_EQ(Stencil(10, 1, 3, 2), (std::vector<int>{0x19, 0x1a, 0x1b, 0x21, 0x22, 0x23}));
   EXPECT_EQ(c_.red(10, 1), 0);
 }
@@ -599,10 +606,10 @@ TEST_F(StencilPixelsTest, ReadShiftsAndOffsetsOnThirtyTwoBitsKeepingEight) {
     int shift, offset, value;
   };
   // The count taken modulo 32 (x86), the result cut to 8 bits.
-  const Case cases[] = {{0, 3, 132},  {0, -1, 128},  {0, -200, 185}, {0, 4096, 129}, {1, 3, 5},
-                        {7, -1, 127}, {8, -1, 255},  {31, 3, 3},     {32, 3, 132},   {33, 3, 5},
-                        {40, -1, 255}, {-1, 3, 67},  {-7, 0, 1},     {-8, -1, 255},  {-32, 0, 129},
-                        {-33, -200, 120}};
+  const Case cases[] = {{0, 3, 132},  {0, -1, 128},  {0, -200, 185}, {0, 4096, 129},
+                        {1, 3, 5},    {7, -1, 127},  {8, -1, 255},   {31, 3, 3},
+                        {32, 3, 132}, {33, 3, 5},    {40, -1, 255},  {-1, 3, 67},
+                        {-7, 0, 1},   {-8, -1, 255}, {-32, 0, 129},  {-33, -200, 120}};
   for (const Case& k : cases) {
     glPixelTransferi(GL_INDEX_SHIFT, k.shift);
     glPixelTransferi(GL_INDEX_OFFSET, k.offset);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstring>
 #include <memory>
+#include <new>
 #include <vector>
 
 #include "fragment/texture_stage.h"
@@ -574,8 +575,14 @@ void drawStencilPixels(Context& ctx, const PixelImage& image) {
   // row. No index shift, offset or S_TO_S map: Mesa stores the image with
   // the pixel transfer state cleared (measured; framebuffer/stencil_index.h).
   const bool withDepth = image.format == GL_DEPTH_STENCIL;
-  std::vector<uint8_t> stencil(static_cast<size_t>(width) * height);
-  std::vector<float> depth(withDepth ? stencil.size() : 0);
+  std::vector<uint8_t> stencil;
+  std::vector<float> depth;
+  try {
+    stencil.resize(static_cast<size_t>(width) * height);
+    depth.resize(withDepth ? stencil.size() : 0);
+  } catch (const std::bad_alloc&) {
+    return ctx.recordError(GL_OUT_OF_MEMORY);  // as make_texture failing
+  }
   for (int j = 0; j < height; ++j)
     for (int i = 0; i < width; ++i) {
       const size_t at = static_cast<size_t>(j) * width + i;
@@ -617,8 +624,14 @@ void copyDepthStencilPixels(Context& ctx, int srcX, int srcY, int width, int hei
   // index shift, offset or map (measured).
   const bool copyDepth = type != GL_STENCIL, copyStencil = type != GL_DEPTH;
   const size_t texels = static_cast<size_t>(width) * height;
-  std::vector<float> depth(copyDepth ? texels : 0, 0.0f);
-  std::vector<uint8_t> stencil(copyStencil ? texels : 0, 0);
+  std::vector<float> depth;
+  std::vector<uint8_t> stencil;
+  try {
+    depth.assign(copyDepth ? texels : 0, 0.0f);
+    stencil.assign(copyStencil ? texels : 0, 0);
+  } catch (const std::bad_alloc&) {
+    return ctx.recordError(GL_OUT_OF_MEMORY);
+  }
   for (long long sy = ry0; sy < ry1; ++sy) {
     const int row = static_cast<int>(static_cast<long long>(srcY) + height - 1 - sy);
     if (row < 0 || row >= height) continue;

@@ -258,7 +258,9 @@ GLenum readPixels(const Framebuffer& fb, const PixelStoreAttrib& pack, GLint x, 
         continue;
       }
       if (depthStencil) {
-        const uint32_t d = fb.depth.get(wx, wy), s = fb.depth.getStencil(wx, wy);
+        // The stencil through the index transfer as for GL_STENCIL_INDEX (measured).
+        const uint32_t d = fb.depth.get(wx, wy),
+                       s = transferStencilIndex(transfer, fb.depth.getStencil(wx, wy));
         if (type == GL_UNSIGNED_INT_24_8) {
           const uint32_t v = (d << 8) | s;
           std::memcpy(dst, &v, 4);

@@ -636,6 +636,14 @@ TEST_F(StencilPixelsTest, ReadShiftsAndOffsetsOnThirtyTwoBitsKeepingEight) {
     EXPECT_EQ(i, k.value) << k.shift << " " << k.offset;
     EXPECT_EQ(f, static_cast<GLfloat>(k.value)) << k.shift << " " << k.offset;
   }
+  // GL_DEPTH_STENCIL reads take the same stencil transfer.
+  glClearDepth(0.5);
+  glClear(GL_DEPTH_BUFFER_BIT);
+  glPixelTransferi(GL_INDEX_SHIFT, 1);
+  glPixelTransferi(GL_INDEX_OFFSET, 3);
+  GLuint ds = 0;
+  glReadPixels(0, 0, 1, 1, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, &ds);
+  EXPECT_EQ(ds, 0x80000005u);
   glPixelTransferi(GL_INDEX_SHIFT, 0);
   glPixelTransferi(GL_INDEX_OFFSET, 0);
 }

@@ -218,14 +218,15 @@ GLenum readPixels(const Framebuffer& fb, const PixelStoreAttrib& pack, GLint x, 
   if (isPacked8888(type) && format != GL_RGBA && format != GL_BGRA) return GL_INVALID_OPERATION;
   if (!isPacked8888(type) && !isDepthStencilType(type) && bytesOf(type) == 0)
     return GL_INVALID_OPERATION;  // other packed types: not yet
-  const bool depth = format == GL_DEPTH_COMPONENT || stencil || depthStencil;  // read from the depth-stencil buffer
+  const bool depth =
+      format == GL_DEPTH_COMPONENT || stencil || depthStencil;  // read from the depth-stencil buffer
   // Mesa: colour from a read buffer of GL_NONE is an invalid operation.
   if (!depth && fb.hasSurface() && !fb.read.pixels) return GL_INVALID_OPERATION;
   if (!fb.hasSurface() || !pixels || width == 0 || height == 0) return GL_NO_ERROR;
 
   const int components = componentsOf(format);
   const int componentBytes = isPacked8888(type) || isDepthStencilType(type) ? 1 : bytesOf(type);
-  const int pixelBytes = isPacked8888(type)        ? 4
+  const int pixelBytes = isPacked8888(type)         ? 4
                          : isDepthStencilType(type) ? depthStencilBytes(type)
                                                     : components * componentBytes;
   const int rowPixels = pack.packRowLength > 0 ? pack.packRowLength : width;
@@ -241,6 +242,14 @@ GLenum readPixels(const Framebuffer& fb, const PixelStoreAttrib& pack, GLint x, 
   const auto inside = [](GLint origin, GLsizei count, int size, int& first, int& last) {
     first = static_cast<int>(std::clamp<int64_t>(-int64_t{origin}, 0, count));
     last = static_cast<int>(std::clamp<int64_t>(int64_t{size} - origin, first, count));
+  };
+  // GL 2.1 §3.6.5 on depth reads: the stored depth as a float, scaled and
+  // biased, clamped to [0, 1]; Mesa leaves the identity to its plain paths.
+  const bool depthTransfer = transfer.depthScale != 1.0f || transfer.depthBias != 0.0f;
+  const auto scaledDepth = [&](uint32_t d) {
+    const float z =
+        static_cast<float>(d * (1.0 / fb.depth.maxValue())) * transfer.depthScale + transfer.depthBias;
+    return z > 0.0f ? (z < 1.0f ? z : 1.0f) : 0.0f;  // NaN: 0
   };
   int row0, row1, col0, col1;
   // The read buffer may be another surface's (glXMakeContextCurrent).
@@ -262,10 +271,13 @@ GLenum readPixels(const Framebuffer& fb, const PixelStoreAttrib& pack, GLint x, 
         const uint32_t d = fb.depth.get(wx, wy),
                        s = transferStencilIndex(transfer, fb.depth.getStencil(wx, wy));
         if (type == GL_UNSIGNED_INT_24_8) {
-          const uint32_t v = (d << 8) | s;
+          // Scaled: truncated to 24 bits (measured).
+          const uint32_t z = depthTransfer ? static_cast<uint32_t>(double(scaledDepth(d)) * 16777215.0) : d;
+          const uint32_t v = (z << 8) | s;
           std::memcpy(dst, &v, 4);
         } else {  // a float depth, then the stencil in the low byte of a word
-          const float z = static_cast<float>(d * (1.0 / fb.depth.maxValue()));
+          const float z =
+              depthTransfer ? scaledDepth(d) : static_cast<float>(d * (1.0 / fb.depth.maxValue()));
           std::memcpy(dst, &z, 4);
           std::memcpy(dst + 4, &s, 4);
         }
@@ -274,7 +286,25 @@ GLenum readPixels(const Framebuffer& fb, const PixelStoreAttrib& pack, GLint x, 
       if (format == GL_DEPTH_COMPONENT) {
         const uint32_t d = fb.depth.get(wx, wy);
         const int bits = fb.depth.bits();
-        if (type == GL_UNSIGNED_INT) {
+        if (depthTransfer) {
+          // Mesa's float-to-type macros (measured): GL_UNSIGNED_INT and the
+          // byte types truncated, GL_BYTE and GL_SHORT as (trunc(max z) - 1) / 2;
+          // GL_UNSIGNED_SHORT, GL_INT and GL_FLOAT as for colours.
+          const float z = scaledDepth(d);
+          if (type == GL_UNSIGNED_INT) {
+            const uint32_t v = static_cast<uint32_t>(double(z) * 4294967295.0);
+            std::memcpy(dst, &v, 4);
+          } else if (type == GL_UNSIGNED_BYTE) {
+            *dst = static_cast<uint8_t>(z * 255.0f);
+          } else if (type == GL_BYTE) {
+            *reinterpret_cast<int8_t*>(dst) = static_cast<int8_t>((static_cast<int>(255.0f * z) - 1) / 2);
+          } else if (type == GL_SHORT) {
+            const int16_t v = static_cast<int16_t>((static_cast<int>(65535.0f * z) - 1) / 2);
+            std::memcpy(dst, &v, 2);
+          } else {
+            storeComponent(dst, type, z);
+          }
+        } else if (type == GL_UNSIGNED_INT) {
           // Replicate the high bits into the low ones: 1.0 reads as 0xffffffff.
           uint32_t v = bits == 16 ? (d << 16) | d : (d << 8) | (d >> 16);
           std::memcpy(dst, &v, 4);

@@ -648,6 +648,58 @@ TEST_F(StencilPixelsTest, ReadShiftsAndOffsetsOnThirtyTwoBitsKeepingEight) {
   glPixelTransferi(GL_INDEX_OFFSET, 0);
 }
 
+// GL_DEPTH_SCALE and GL_DEPTH_BIAS (§3.6.5) on depth reads, with Mesa's
+// conversions from the scaled float.
+TEST_F(StencilPixelsTest, DepthReadsTakeTheDepthScaleAndBias) {
+  glClearDepth(0.5);  // stored 0x800000
+  glClearStencil(0x21);
+  glClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+  glPixelTransferf(GL_DEPTH_SCALE, 0.5f);
+  GLubyte ub = 0;
+  GLbyte b = 0;
+  GLshort s = 0;
+  GLushort us = 0;
+  GLint i = 0;
+  GLuint ui = 0, ds = 0;
+  GLfloat f = 0;
+  glReadPixels(0, 0, 1, 1, GL_DEPTH_COMPONENT, GL_UNSIGNED_BYTE, &ub);
+  glReadPixels(0, 0, 1, 1, GL_DEPTH_COMPONENT, GL_BYTE, &b);
+  glReadPixels(0, 0, 1, 1, GL_DEPTH_COMPONENT, GL_SHORT, &s);
+  glReadPixels(0, 0, 1, 1, GL_DEPTH_COMPONENT, GL_UNSIGNED_SHORT, &us);
+  glReadPixels(0, 0, 1, 1, GL_DEPTH_COMPONENT, GL_INT, &i);
+  glReadPixels(0, 0, 1, 1, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, &ui);
+  glReadPixels(0, 0, 1, 1, GL_DEPTH_COMPONENT, GL_FLOAT, &f);
+  glReadPixels(0, 0, 1, 1, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, &ds);
+  EXPECT_NO_GL_ERROR();
+  EXPECT_EQ(ub, 63);
+  EXPECT_EQ(b, 31);
+  EXPECT_EQ(s, 8191);
+  EXPECT_EQ(us, 0x4000);
+  EXPECT_EQ(i, 536870975);
+  EXPECT_EQ(ui, 0x4000007fu);
+  EXPECT_FLOAT_EQ(f, 0.25000003f);
+  EXPECT_EQ(ds, 0x40000021u);
+  // Clamped to [0, 1]; 1.0 scaled by 0.5 truncates to 0x7fffff in 24 bits.
+  glClearDepth(1);
+  glClear(GL_DEPTH_BUFFER_BIT);
+  glReadPixels(0, 0, 1, 1, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, &ds);
+  EXPECT_EQ(ds, 0x7fffff21u);
+  glPixelTransferf(GL_DEPTH_SCALE, 2.0f);
+  glPixelTransferf(GL_DEPTH_BIAS, -0.3f);
+  glReadPixels(0, 0, 1, 1, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, &ui);
+  EXPECT_EQ(ui, 0xffffffffu);
+  glPixelTransferf(GL_DEPTH_SCALE, 0.7f);
+  glPixelTransferf(GL_DEPTH_BIAS, 0.1f);
+  glClearDepth(0);
+  glClear(GL_DEPTH_BUFFER_BIT);
+  glReadPixels(0, 0, 1, 1, GL_DEPTH_COMPONENT, GL_UNSIGNED_BYTE, &ub);
+  glReadPixels(0, 0, 1, 1, GL_DEPTH_COMPONENT, GL_UNSIGNED_SHORT, &us);
+  EXPECT_EQ(ub, 25);      // 25.5 truncated
+  EXPECT_EQ(us, 0x199a);  // 6553.5 rounded to even
+  glPixelTransferf(GL_DEPTH_SCALE, 1);
+  glPixelTransferf(GL_DEPTH_BIAS, 0);
+}
+
 // ---- errors ---------------------------------------------------------------------
 
 TEST_F(StencilPixelsTest, FormatAndTypeErrors) {

@@ -35,8 +35,9 @@ void clearStencil(Framebuffer& fb, uint32_t value, uint32_t writeMask, const Pix
 size_t packedImageBytes(const PixelStoreAttrib& pack, GLsizei width, GLsizei height, GLenum format,
                         GLenum type);
 
-// GL_STENCIL_INDEX values go through the stencil index transfer of
-// `transfer` (§3.6.5; framebuffer/stencil_index.h).
+// The pixel transfer of `transfer` (§3.6.5): stencil values through the
+// stencil index transfer (framebuffer/stencil_index.h), depths through
+// GL_DEPTH_SCALE and GL_DEPTH_BIAS.
 GLenum readPixels(const Framebuffer& fb, const PixelStoreAttrib& pack, GLint x, GLint y, GLsizei width,
                   GLsizei height, GLenum format, GLenum type, void* pixels,
                   const PixelModeAttrib& transfer = PixelModeAttrib());

@@ -525,8 +525,7 @@ uint8_t unpackedStencilIndex(const PixelImage& image, int i, int j) {
                                                                                 : 4;
   uint8_t b[4];
   for (int k = 0; k < bytes; ++k) b[k] = p[l.swapBytes ? bytes - 1 - k : k];
-  if (bytes == 1) return b[0];
-  if (bytes == 2) return b[0];  // little-endian: the low byte first
+  if (bytes < 4) return b[0];  // the low byte (little-endian)
   uint32_t v;
   std::memcpy(&v, b, 4);
   if (image.type == GL_FLOAT) {

@@ -117,8 +117,7 @@ GLAPI void APIENTRY glReadPixels(GLint x, GLint y, GLsizei width, GLsizei height
     pixels = b->data.data() + offset;
   }
   GLenum error = readPixels(ctx->framebuffer, ctx->pixelStore, x, y, width, height, format, type, pixels,
-                            ctx->pixelMode.indexShift, ctx->pixelMode.indexOffset, &ctx->pixelMode,
-                            &ctx->pixelMaps);
+                            ctx->pixelMode, &ctx->pixelMaps);
   if (error != GL_NO_ERROR) ctx->recordError(error);
 }
 

@@ -174,14 +174,40 @@ bool isDrawPixelsFormat(GLenum format) {
     case GL_BGR:
     case GL_BGRA:
     case GL_LUMINANCE:
-    case GL_LUMINANCE_ALPHA: return true;
+    case GL_LUMINANCE_ALPHA:
+    case GL_DEPTH_STENCIL: return true;
+    default: return false;
+  }
+}
+
+bool isPackedPixelType(GLenum type) {
+  switch (type) {
+    case GL_UNSIGNED_BYTE_3_3_2:
+    case GL_UNSIGNED_BYTE_2_3_3_REV:
+    case GL_UNSIGNED_SHORT_5_6_5:
+    case GL_UNSIGNED_SHORT_5_6_5_REV:
+    case GL_UNSIGNED_SHORT_4_4_4_4:
+    case GL_UNSIGNED_SHORT_4_4_4_4_REV:
+    case GL_UNSIGNED_SHORT_5_5_5_1:
+    case GL_UNSIGNED_SHORT_1_5_5_5_REV:
+    case GL_UNSIGNED_INT_8_8_8_8:
+    case GL_UNSIGNED_INT_8_8_8_8_REV:
+    case GL_UNSIGNED_INT_10_10_10_2:
+    case GL_UNSIGNED_INT_2_10_10_10_REV: return true;
     default: return false;
   }
 }
 
 // GL 2.1 §3.6.4 and table 3.8: the error a format/type pair raises, if any.
 GLenum drawPixelsTypeError(const Context& ctx, GLenum format, GLenum type) {
+  // GL_RG (ARB_texture_rg) is no format here, but with a packed type it is
+  // the invalid operation Mesa records (piglit draw-pixels checks it).
+  constexpr GLenum kRG = 0x8227;
+  if (format == kRG) return isPackedPixelType(type) ? GL_INVALID_OPERATION : GL_INVALID_ENUM;
   if (!isDrawPixelsFormat(format)) return GL_INVALID_ENUM;
+  // EXT_packed_depth_stencil: GL_DEPTH_STENCIL only with its type (else an
+  // invalid enum), the type only with it (else an invalid operation).
+  if (format == GL_DEPTH_STENCIL && type != GL_UNSIGNED_INT_24_8) return GL_INVALID_ENUM;
   switch (type) {
     case GL_UNSIGNED_BYTE:
     case GL_BYTE:
@@ -209,11 +235,17 @@ GLenum drawPixelsTypeError(const Context& ctx, GLenum format, GLenum type) {
     case GL_UNSIGNED_INT_2_10_10_10_REV:
       if (format != GL_RGBA && format != GL_BGRA) return GL_INVALID_OPERATION;
       break;
+    case GL_UNSIGNED_INT_24_8:
+      if (format != GL_DEPTH_STENCIL) return GL_INVALID_OPERATION;
+      break;
     default: return GL_INVALID_ENUM;
   }
-  // §4.3.1 via §3.6.4: no stencil buffer here; depth only with a depth buffer.
-  if (format == GL_STENCIL_INDEX) return GL_INVALID_OPERATION;
-  if (format == GL_DEPTH_COMPONENT && ctx.framebuffer.depth.bits() == 0) return GL_INVALID_OPERATION;
+  // §3.6.4: stencil only with a stencil buffer, depth only with a depth buffer.
+  const DepthBuffer& db = ctx.framebuffer.depth;
+  if ((format == GL_STENCIL_INDEX || format == GL_DEPTH_STENCIL) && db.stencilBits() == 0)
+    return GL_INVALID_OPERATION;
+  if ((format == GL_DEPTH_COMPONENT || format == GL_DEPTH_STENCIL) && db.bits() == 0)
+    return GL_INVALID_OPERATION;
   return GL_NO_ERROR;
 }
 
@@ -281,7 +313,6 @@ void drawPixelsUnpacked(GLsizei width, GLsizei height, GLenum format, GLenum typ
   if (!ctx->rasterPos.valid) return;
   if (ctx->renderMode.mode != GL_RENDER) return pixelsInFeedbackOrSelect(*ctx, GL_DRAW_PIXEL_TOKEN);
   if (width == 0 || height == 0) return;
-  if (format == GL_STENCIL_INDEX) return ctx->recordError(GL_INVALID_OPERATION);  // not implemented yet
   pipeline::PixelImage image;
   image.width = width;
   image.height = height;
@@ -290,6 +321,8 @@ void drawPixelsUnpacked(GLsizei width, GLsizei height, GLenum format, GLenum typ
   image.layout = layout;
   image.pixels = bytes;
   if (format == GL_DEPTH_COMPONENT) return pipeline::drawDepthPixels(*ctx, image);
+  if (format == GL_STENCIL_INDEX || format == GL_DEPTH_STENCIL)
+    return pipeline::drawStencilPixels(*ctx, image);
   pipeline::drawColorPixels(*ctx, image);
 }
 
@@ -319,12 +352,18 @@ GLAPI void APIENTRY glDrawPixels(GLsizei width, GLsizei height, GLenum format, G
   // The pixels are read now, while compiling too (Mesa's save_DrawPixels
   // unpacks the image at compile time, §5.4), and replayed from the copy.
   const bool compiling = api::listCompiler(ctx) && !api::listCompiler(ctx)->insideBeginEnd();
-  if (!ctx->insideBeginEnd && width > 0 && height > 0 &&
-      texture::checkFormatAndType(format, type) == GL_NO_ERROR &&
-      (type != GL_BITMAP || format == GL_COLOR_INDEX)) {
+  // GL_DEPTH_STENCIL's GL_UNSIGNED_INT_24_8 is laid out as one 32-bit index
+  // a pixel; GL_STENCIL_INDEX and GL_COLOR_INDEX take GL_BITMAP.
+  const bool depthStencil = format == GL_DEPTH_STENCIL && type == GL_UNSIGNED_INT_24_8;
+  const bool readable = depthStencil || (texture::checkFormatAndType(format, type) == GL_NO_ERROR &&
+                                         (type != GL_BITMAP || format == GL_STENCIL_INDEX ||
+                                           format == GL_COLOR_INDEX));
+  if (!ctx->insideBeginEnd && width > 0 && height > 0 && readable) {
     PixelStoreAttrib store = ctx->pixelStore;
     store.unpackSkipImages = 0;  // a 2D image
-    const texture::ClientLayout layout = texture::unpackLayout(store, width, height, format, type);
+    const texture::ClientLayout layout =
+        texture::unpackLayout(store, width, height, depthStencil ? GL_STENCIL_INDEX : format,
+                              depthStencil ? GL_UNSIGNED_INT : type);
     const bool read = compiling || (ctx->rasterPos.valid && ctx->renderMode.mode == GL_RENDER &&
                                     drawPixelsTypeError(*ctx, format, type) == GL_NO_ERROR);
     if (read) {
@@ -345,8 +384,13 @@ GLAPI void APIENTRY glCopyPixels(GLint x, GLint y, GLsizei width, GLsizei height
   Context* ctx = api::contextFlushed();
   if (!ctx) return;
   if (width < 0 || height < 0) return ctx->recordError(GL_INVALID_VALUE);
-  if (type != GL_COLOR && type != GL_DEPTH && type != GL_STENCIL) return ctx->recordError(GL_INVALID_ENUM);
-  if (type == GL_STENCIL || (type == GL_DEPTH && ctx->framebuffer.depth.bits() == 0))
+  // GL_DEPTH_STENCIL: EXT_packed_depth_stencil.
+  if (type != GL_COLOR && type != GL_DEPTH && type != GL_STENCIL && type != GL_DEPTH_STENCIL)
+    return ctx->recordError(GL_INVALID_ENUM);
+  const DepthBuffer& db = ctx->framebuffer.depth;
+  if ((type == GL_DEPTH || type == GL_DEPTH_STENCIL) && db.bits() == 0)
+    return ctx->recordError(GL_INVALID_OPERATION);
+  if ((type == GL_STENCIL || type == GL_DEPTH_STENCIL) && db.stencilBits() == 0)
     return ctx->recordError(GL_INVALID_OPERATION);
   // No read buffer (glReadBuffer(GL_NONE)): Mesa's _mesa_source_buffer_exists.
   if (type == GL_COLOR && ctx->framebuffer.bound() && !ctx->framebuffer.read.pixels)
@@ -355,7 +399,7 @@ GLAPI void APIENTRY glCopyPixels(GLint x, GLint y, GLsizei width, GLsizei height
   if (ctx->renderMode.mode == GL_RENDER) {
     if (width == 0 || height == 0) return;
     if (type == GL_COLOR) return pipeline::copyColorPixels(*ctx, x, y, width, height);
-    return ctx->recordError(GL_INVALID_OPERATION);  // GL_DEPTH: not implemented yet
+    return pipeline::copyDepthStencilPixels(*ctx, x, y, width, height, type);
   }
   pixelsInFeedbackOrSelect(*ctx, GL_COPY_PIXEL_TOKEN);
 }

@@ -1,5 +1,7 @@
 #include "framebuffer/read_pixels.h"
 
+#include "framebuffer/stencil_index.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -242,8 +244,8 @@ size_t packedImageBytes(const PixelStoreAttrib& pack, GLsizei width, GLsizei hei
 }
 
 GLenum readPixels(const Framebuffer& fb, const PixelStoreAttrib& pack, GLint x, GLint y, GLsizei width,
-                  GLsizei height, GLenum format, GLenum type, void* pixels, int indexShift, int indexOffset,
-                  const PixelModeAttrib* transfer, const PixelMaps* maps) {
+                  GLsizei height, GLenum format, GLenum type, void* pixels, const PixelModeAttrib& transfer,
+                  const PixelMaps* maps) {
   if (!isKnownFormat(format) || !isKnownType(type)) return GL_INVALID_ENUM;
   // EXT_packed_depth_stencil: GL_DEPTH_STENCIL only with its types (else an
   // invalid enum), its types only with it (else an invalid operation).
@@ -256,17 +258,17 @@ GLenum readPixels(const Framebuffer& fb, const PixelStoreAttrib& pack, GLint x, 
   if (isPacked8888(type) && format != GL_RGBA && format != GL_BGRA) return GL_INVALID_OPERATION;
   if (!isPacked8888(type) && !isDepthStencilType(type) && bytesOf(type) == 0)
     return GL_INVALID_OPERATION;  // other packed types: not yet
-  const bool depth = format == GL_DEPTH_COMPONENT || stencil || depthStencil;  // read from the depth-stencil buffer
+  const bool depth =
+      format == GL_DEPTH_COMPONENT || stencil || depthStencil;  // read from the depth-stencil buffer
   // Mesa: colour from a read buffer of GL_NONE is an invalid operation.
   if (!depth && fb.hasSurface() && !fb.read.pixels) return GL_INVALID_OPERATION;
   if (!fb.hasSurface() || !pixels || width == 0 || height == 0) return GL_NO_ERROR;
 
   const int components = componentsOf(format);
   const bool colorTransfer =
-      transfer && (transfer->scale != glm::vec4(1) || transfer->bias != glm::vec4(0) || (transfer->mapColor && maps));
-  const bool depthTransfer = transfer && (transfer->depthScale != 1.0f || transfer->depthBias != 0.0f);
+      transfer.scale != glm::vec4(1) || transfer.bias != glm::vec4(0) || (transfer.mapColor && maps);
   const int componentBytes = isPacked8888(type) || isDepthStencilType(type) ? 1 : bytesOf(type);
-  const int pixelBytes = isPacked8888(type)        ? 4
+  const int pixelBytes = isPacked8888(type)         ? 4
                          : isDepthStencilType(type) ? depthStencilBytes(type)
                                                     : components * componentBytes;
   const int rowPixels = pack.packRowLength > 0 ? pack.packRowLength : width;
@@ -283,6 +285,14 @@ GLenum readPixels(const Framebuffer& fb, const PixelStoreAttrib& pack, GLint x, 
     first = static_cast<int>(std::clamp<int64_t>(-int64_t{origin}, 0, count));
     last = static_cast<int>(std::clamp<int64_t>(int64_t{size} - origin, first, count));
   };
+  // GL 2.1 §3.6.5 on depth reads: the stored depth as a float, scaled and
+  // biased, clamped to [0, 1]; Mesa leaves the identity to its plain paths.
+  const bool depthTransfer = transfer.depthScale != 1.0f || transfer.depthBias != 0.0f;
+  const auto scaledDepth = [&](uint32_t d) {
+    const float z =
+        static_cast<float>(d * (1.0 / fb.depth.maxValue())) * transfer.depthScale + transfer.depthBias;
+    return z > 0.0f ? (z < 1.0f ? z : 1.0f) : 0.0f;  // NaN: 0
+  };
   int row0, row1, col0, col1;
   // The read buffer may be another surface's (glXMakeContextCurrent).
   inside(y, height, depth ? fb.depth.height() : fb.read.height, row0, row1);
@@ -294,20 +304,22 @@ GLenum readPixels(const Framebuffer& fb, const PixelStoreAttrib& pack, GLint x, 
       const int wx = x + col;
       uint8_t* dst = dstRow + static_cast<size_t>(col) * pixelBytes;
       if (stencil) {
-        // GL 2.1 §4.3.2: the index shifted and offset; Mesa does it on bytes.
-        uint32_t s = fb.depth.getStencil(wx, wy);
-        if (indexShift || indexOffset)
-          s = static_cast<uint8_t>((indexShift >= 0 ? s << indexShift : s >> -indexShift) + indexOffset);
-        storeStencil(dst, type, s);
+        // GL 2.1 §4.3.2: the index through the pixel transfer, kept to 8 bits.
+        storeStencil(dst, type, transferStencilIndex(transfer, maps, fb.depth.getStencil(wx, wy)));
         continue;
       }
       if (depthStencil) {
-        const uint32_t d = fb.depth.get(wx, wy), s = fb.depth.getStencil(wx, wy);
+        // The stencil through the index transfer as for GL_STENCIL_INDEX (measured).
+        const uint32_t d = fb.depth.get(wx, wy),
+                       s = transferStencilIndex(transfer, maps, fb.depth.getStencil(wx, wy));
         if (type == GL_UNSIGNED_INT_24_8) {
-          const uint32_t v = (d << 8) | s;
+          // Scaled: truncated to 24 bits (measured).
+          const uint32_t z = depthTransfer ? static_cast<uint32_t>(double(scaledDepth(d)) * 16777215.0) : d;
+          const uint32_t v = (z << 8) | s;
           std::memcpy(dst, &v, 4);
         } else {  // a float depth, then the stencil in the low byte of a word
-          const float z = static_cast<float>(d * (1.0 / fb.depth.maxValue()));
+          const float z =
+              depthTransfer ? scaledDepth(d) : static_cast<float>(d * (1.0 / fb.depth.maxValue()));
           std::memcpy(dst, &z, 4);
           std::memcpy(dst + 4, &s, 4);
         }
@@ -316,19 +328,25 @@ GLenum readPixels(const Framebuffer& fb, const PixelStoreAttrib& pack, GLint x, 
       if (format == GL_DEPTH_COMPONENT) {
         const uint32_t d = fb.depth.get(wx, wy);
         const int bits = fb.depth.bits();
-        if (depthTransfer) {  // in float, clamped; unsigned ints truncated (Mesa's FLOAT_TO_UINT)
-          float z = static_cast<float>(d * (1.0 / fb.depth.maxValue()));
-          z = z * transfer->depthScale + transfer->depthBias;
-          z = z > 0.0f ? (z < 1.0f ? z : 1.0f) : 0.0f;
+        if (depthTransfer) {
+          // Mesa's float-to-type macros (measured): GL_UNSIGNED_INT and the
+          // byte types truncated, GL_BYTE and GL_SHORT as (trunc(max z) - 1) / 2;
+          // GL_UNSIGNED_SHORT, GL_INT and GL_FLOAT as for colours.
+          const float z = scaledDepth(d);
           if (type == GL_UNSIGNED_INT) {
             const uint32_t v = static_cast<uint32_t>(double(z) * 4294967295.0);
             std::memcpy(dst, &v, 4);
+          } else if (type == GL_UNSIGNED_BYTE) {
+            *dst = static_cast<uint8_t>(z * 255.0f);
+          } else if (type == GL_BYTE) {
+            *reinterpret_cast<int8_t*>(dst) = static_cast<int8_t>((static_cast<int>(255.0f * z) - 1) / 2);
+          } else if (type == GL_SHORT) {
+            const int16_t v = static_cast<int16_t>((static_cast<int>(65535.0f * z) - 1) / 2);
+            std::memcpy(dst, &v, 2);
           } else {
             storeComponent(dst, type, z);
           }
-          continue;
-        }
-        if (type == GL_UNSIGNED_INT) {
+        } else if (type == GL_UNSIGNED_INT) {
           // Replicate the high bits into the low ones: 1.0 reads as 0xffffffff.
           uint32_t v = bits == 16 ? (d << 16) | d : (d << 8) | (d >> 16);
           std::memcpy(dst, &v, 4);
@@ -358,8 +376,8 @@ GLenum readPixels(const Framebuffer& fb, const PixelStoreAttrib& pack, GLint x, 
       }
       if (colorTransfer) {  // §3.6.5: scale and bias, then the colour maps
         for (int i = 0; i < 4; ++i) {
-          f[i] = f[i] * transfer->scale[i] + transfer->bias[i];
-          if (transfer->mapColor && maps) f[i] = (*maps)[GL_PIXEL_MAP_R_TO_R + i].atColor(f[i]);
+          f[i] = f[i] * transfer.scale[i] + transfer.bias[i];
+          if (transfer.mapColor && maps) f[i] = (*maps)[GL_PIXEL_MAP_R_TO_R + i].atColor(f[i]);
           // Clamped to the type's range: [0, 1], [-1, 1] for signed types, not for floats.
           const float low = type == GL_BYTE || type == GL_SHORT || type == GL_INT ? -1.0f : 0.0f;
           if (type != GL_FLOAT) f[i] = f[i] > low ? (f[i] < 1.0f ? f[i] : 1.0f) : low;

@@ -36,14 +36,13 @@ void clearStencil(Framebuffer& fb, uint32_t value, uint32_t writeMask, const Pix
 size_t packedImageBytes(const PixelStoreAttrib& pack, GLsizei width, GLsizei height, GLenum format,
                         GLenum type);
 
-// GL_STENCIL_INDEX values are shifted and offset by GL_INDEX_SHIFT and
-// GL_INDEX_OFFSET (§3.6.5). With `transfer` (and `maps`), colour goes through
-// the scale, bias and GL_MAP_COLOR, depth through GL_DEPTH_SCALE and _BIAS
-// (§4.3.2), as Mesa's _mesa_readpixels does: then clamped to [0, 1], except
-// colour read as GL_FLOAT.
+// The pixel transfer of `transfer` (§3.6.5, §4.3.2), as Mesa's
+// _mesa_readpixels does it: stencil values through the stencil index
+// transfer (framebuffer/stencil_index.h), depths through GL_DEPTH_SCALE and
+// GL_DEPTH_BIAS, colour through the scale, bias and (with `maps`)
+// GL_MAP_COLOR, then clamped to [0, 1], except colour read as GL_FLOAT.
 GLenum readPixels(const Framebuffer& fb, const PixelStoreAttrib& pack, GLint x, GLint y, GLsizei width,
-                  GLsizei height, GLenum format, GLenum type, void* pixels, int indexShift = 0,
-                  int indexOffset = 0, const PixelModeAttrib* transfer = nullptr,
-                  const PixelMaps* maps = nullptr);
+                  GLsizei height, GLenum format, GLenum type, void* pixels,
+                  const PixelModeAttrib& transfer = PixelModeAttrib(), const PixelMaps* maps = nullptr);
 
 }  // namespace glfixed

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstring>
 #include <memory>
+#include <new>
 #include <vector>
 
 #include "fragment/texture_stage.h"
@@ -173,13 +174,38 @@ long long roundToInt(float v) {
   return std::lround(v);
 }
 
+// What the fragments of a stencil image do (draw_textured_quad with
+// write_stencil, measured on llvmpipe): the stencil test, depth test, alpha
+// test, blending and colour writes of the GL state do not apply.
+void writeStencilImageState(const Context& ctx, bool writeDepth, raster::RasterState& r) {
+  for (bool& c : r.colorWrite) c = false;
+  r.alphaTest = fragment::AlphaTestState();
+  r.blend = fragment::BlendState();
+  r.depthTest = writeDepth;
+  r.depthFunc = GL_ALWAYS;
+  r.depthWrite = ctx.depth.writeMask;
+  r.stencil.enabled = ctx.framebuffer.depth.stencilBits() > 0;
+  fragment::StencilFaceState f;
+  f.func = GL_ALWAYS;
+  f.writeMask = static_cast<int32_t>(ctx.stencil.face[0].writeMask & 0xffu);
+  f.fail = f.depthFail = GL_KEEP;
+  f.depthPass = GL_REPLACE;
+  r.stencil.face[0] = r.stencil.face[1] = f;
+}
+
 // The temporary texture and its quad: the image drawn at window (x, y)
 // zoomed by the pixel zoom (draw_textured_quad). `topDown`: texture row 0 is
 // the image's top row (glCopyPixels reads the buffer that way), else its
 // bottom row (glDrawPixels).
+// `color`: the fragments' colour (null: the raster colour). A `depth`
+// image with stencil values writes them as st_DrawPixels sets the state for
+// a stencil write: stencil test GL_ALWAYS, GL_REPLACE under the front write
+// mask; no colour, alpha test or blending; the depth test only to write an
+// image's depth (GL_ALWAYS, under the depth mask). The scissor (when on)
+// still cuts (draw_textured_quad's rasterizer state).
 void drawTexturedQuad(Context& ctx, const texture::TextureObject* object,
                       const fragment::DepthImageState* depth, long long x, long long y, int width, int height,
-                      bool topDown) {
+                      bool topDown, const float* color = nullptr) {
   const PixelModeAttrib& pm = ctx.pixelMode;
   const float zoomX = pm.zoomX, zoomY = pm.zoomY;
   raster::PixelQuad q;
@@ -196,10 +222,8 @@ void drawTexturedQuad(Context& ctx, const texture::TextureObject* object,
   q.t1 = topDown ? 1.0f : 0.0f;
   q.texCoords = true;
   const RasterPosState& rp = ctx.rasterPos;
-  q.color[0] = rp.color.r;
-  q.color[1] = rp.color.g;
-  q.color[2] = rp.color.b;
-  q.color[3] = rp.color.a;
+  const float rasterColor[4] = {rp.color.r, rp.color.g, rp.color.b, rp.color.a};
+  for (int k = 0; k < 4; ++k) q.color[k] = color ? color[k] : rasterColor[k];
   if (std::isnan(q.x1) || std::isnan(q.y1) || q.x0 == q.x1 || q.y0 == q.y1) return;
   const float w = static_cast<float>(ctx.framebuffer.width()),
               h = static_cast<float>(ctx.framebuffer.height());
@@ -229,6 +253,7 @@ void drawTexturedQuad(Context& ctx, const texture::TextureObject* object,
   ps.raster.textures = object ? &stage : nullptr;
   ps.raster.texCoordUnits = 1;
   if (depth) ps.raster.depthImage = *depth;
+  if (depth && depth->stencil) writeStencilImageState(ctx, depth->depth != nullptr, ps.raster);
   ps.raster.firstVertexConvention = false;  // the state tracker's rasterizer state
   ShadedVertices v;
   const float cz = q.z * 2.0f - 1.0f;
@@ -552,6 +577,155 @@ void drawDepthPixels(Context& ctx, const PixelImage& image) {
   d.width = width;
   d.height = height;
   drawTexturedQuad(ctx, nullptr, &d, x, y, width, height, false);
+}
+
+namespace {
+
+// A stencil index of a client image as Mesa unpacks it (extract_uint_indexes,
+// then the low 8 bits): integers as they are (signed ones sign-extended),
+// floats truncated as x86's 64-bit conversion does (NaN and the far-off
+// ones: 0), bits 0 or 1. Measured: 300.0 draws 44, -1 draws 255.
+uint8_t unpackedStencilIndex(const PixelImage& image, int i, int j) {
+  const texture::ClientLayout& l = image.layout;
+  const uint8_t* row = image.pixels + l.start + static_cast<size_t>(j) * l.rowStride;
+  if (l.bitmap) {  // most significant bit first
+    const int bit = l.skipBits + i;
+    return (row[bit >> 3] >> (7 - (bit & 7))) & 1u;
+  }
+  const uint8_t* p = row + static_cast<size_t>(i) * l.groupBytes;
+  const int bytes = image.type == GL_UNSIGNED_BYTE || image.type == GL_BYTE     ? 1
+                    : image.type == GL_UNSIGNED_SHORT || image.type == GL_SHORT ? 2
+                                                                                : 4;
+  uint8_t b[4];
+  for (int k = 0; k < bytes; ++k) b[k] = p[l.swapBytes ? bytes - 1 - k : k];
+  if (bytes < 4) return b[0];  // the low byte (little-endian)
+  uint32_t v;
+  std::memcpy(&v, b, 4);
+  if (image.type == GL_FLOAT) {
+    float f;
+    std::memcpy(&f, &v, 4);
+    if (!(std::fabs(f) < 9.2e18f)) return 0;  // cvttss2si's 0x8000000000000000, NaN too
+    return static_cast<uint8_t>(static_cast<uint64_t>(static_cast<int64_t>(f)));
+  }
+  return static_cast<uint8_t>(v);  // GL_UNSIGNED_INT_24_8: the stencil is the low byte
+}
+
+// _mesa_clip_drawpixels without zoom: an image wholly outside the buffer and
+// the scissor box reads no pixel.
+bool drawnAtAll(const Context& ctx, long long x, long long y, int width, int height) {
+  const PixelModeAttrib& pm = ctx.pixelMode;
+  if (pm.zoomX != 1.0f || pm.zoomY != 1.0f) return true;
+  const ScissorAttrib& sc = ctx.scissor;
+  long long x0 = 0, y0 = 0, x1 = ctx.framebuffer.width(), y1 = ctx.framebuffer.height();
+  if (sc.test) {
+    x0 = std::max<long long>(x0, sc.x);
+    y0 = std::max<long long>(y0, sc.y);
+    x1 = std::min<long long>(x1, static_cast<long long>(sc.x) + sc.width);
+    y1 = std::min<long long>(y1, static_cast<long long>(sc.y) + sc.height);
+  }
+  return !(x + width <= x0 || x >= x1 || y + height <= y0 || y >= y1);
+}
+
+// A depth value of the depth buffer as llvmpipe's sampler reads the
+// temporary depth texture (its format the buffer's).
+float storedDepthAsFloat(const DepthBuffer& db, uint32_t d) {
+  return static_cast<float>(d) * (db.bits() == 16 ? 1.0f / 65535.0f : 1.0f / 16777215.0f);
+}
+
+}  // namespace
+
+void drawStencilPixels(Context& ctx, const PixelImage& image) {
+  flushBitmapCache(ctx);
+  if (!ctx.framebuffer.bound() || image.width <= 0 || image.height <= 0) return;
+  const RasterPosState& rp = ctx.rasterPos;
+  const long long x = roundToInt(rp.position.x), y = roundToInt(rp.position.y);
+  const int width = std::min(image.width, texture::kMaxTextureSize);
+  const int height = std::min(image.height, texture::kMaxTextureSize);
+  if (!drawnAtAll(ctx, x, y, width, height)) return;
+  if (!image.pixels) return ctx.recordError(GL_OUT_OF_MEMORY);
+  // The stencil values (and depths) the shader samples, row 0 the bottom
+  // row. No index shift, offset or S_TO_S map: Mesa stores the image with
+  // the pixel transfer state cleared (measured; framebuffer/stencil_index.h).
+  const bool withDepth = image.format == GL_DEPTH_STENCIL;
+  std::vector<uint8_t> stencil;
+  std::vector<float> depth;
+  try {
+    stencil.resize(static_cast<size_t>(width) * height);
+    depth.resize(withDepth ? stencil.size() : 0);
+  } catch (const std::bad_alloc&) {
+    return ctx.recordError(GL_OUT_OF_MEMORY);  // as make_texture failing
+  }
+  for (int j = 0; j < height; ++j)
+    for (int i = 0; i < width; ++i) {
+      const size_t at = static_cast<size_t>(j) * width + i;
+      stencil[at] = unpackedStencilIndex(image, i, j);
+      if (withDepth) {  // GL_UNSIGNED_INT_24_8: the depth in the top 24 bits, no scale or bias (measured)
+        const uint8_t* p = image.pixels + image.layout.start +
+                           static_cast<size_t>(j) * image.layout.rowStride + static_cast<size_t>(i) * 4;
+        uint32_t v;
+        std::memcpy(&v, p, 4);
+        if (image.layout.swapBytes) v = __builtin_bswap32(v);
+        depth[at] = static_cast<float>(v >> 8) * (1.0f / 16777215.0f);
+      }
+    }
+  fragment::DepthImageState d;
+  d.depth = withDepth ? depth.data() : nullptr;
+  d.stencil = stencil.data();
+  d.width = width;
+  d.height = height;
+  drawTexturedQuad(ctx, nullptr, &d, x, y, width, height, false);
+}
+
+void copyDepthStencilPixels(Context& ctx, int srcX, int srcY, int width, int height, GLenum type) {
+  flushBitmapCache(ctx);
+  Framebuffer& fb = ctx.framebuffer;
+  if (!fb.bound() || width <= 0 || height <= 0) return;
+  const DepthBuffer& db = fb.depth;
+  const RasterPosState& rp = ctx.rasterPos;
+  const long long x = roundToInt(rp.position.x), y = roundToInt(rp.position.y);
+  // The source cut to the buffer; wholly outside: nothing is drawn.
+  const long long rx0 = std::max<long long>(0, srcX), ry0 = std::max<long long>(0, srcY);
+  const long long rx1 = std::min<long long>(db.width(), static_cast<long long>(srcX) + width);
+  const long long ry1 = std::min<long long>(db.height(), static_cast<long long>(srcY) + height);
+  if (rx0 >= rx1 || ry0 >= ry1) return;
+  width = std::min(width, texture::kMaxTextureSize);
+  height = std::min(height, texture::kMaxTextureSize);
+  // llvmpipe cannot render to a depth format, so Mesa never blits these: the
+  // source is read whole first (overlapping copies), texture row 0 the top
+  // row, 0 outside the buffer; values as stored: no depth scale or bias, no
+  // index shift, offset or map (measured).
+  const bool copyDepth = type != GL_STENCIL, copyStencil = type != GL_DEPTH;
+  const size_t texels = static_cast<size_t>(width) * height;
+  std::vector<float> depth;
+  std::vector<uint8_t> stencil;
+  try {
+    depth.assign(copyDepth ? texels : 0, 0.0f);
+    stencil.assign(copyStencil ? texels : 0, 0);
+  } catch (const std::bad_alloc&) {
+    return ctx.recordError(GL_OUT_OF_MEMORY);
+  }
+  for (long long sy = ry0; sy < ry1; ++sy) {
+    const int row = static_cast<int>(static_cast<long long>(srcY) + height - 1 - sy);
+    if (row < 0 || row >= height) continue;
+    for (long long sx = rx0; sx < rx1; ++sx) {
+      const int col = static_cast<int>(sx - srcX);
+      if (col >= width) break;
+      const size_t at = static_cast<size_t>(row) * width + col;
+      if (copyDepth) depth[at] = storedDepthAsFloat(db, db.get(static_cast<int>(sx), static_cast<int>(sy)));
+      if (copyStencil)
+        stencil[at] = static_cast<uint8_t>(db.getStencil(static_cast<int>(sx), static_cast<int>(sy)));
+    }
+  }
+  fragment::DepthImageState d;
+  d.depth = copyDepth ? depth.data() : nullptr;
+  d.stencil = copyStencil ? stencil.data() : nullptr;
+  d.width = width;
+  d.height = height;
+  // A depth copy's fragments are coloured with the current colour (st_CopyPixels),
+  // not the raster colour, and go through the fragment operations.
+  const glm::vec4& c = ctx.current.color;
+  const float color[4] = {c.r, c.g, c.b, c.a};
+  drawTexturedQuad(ctx, nullptr, &d, x, y, width, height, true, color);
 }
 
 }  // namespace glfixed::pipeline

@@ -5,6 +5,13 @@
 
 #include <GL/gl.h>
 
+#ifndef GL_DEPTH_STENCIL
+#define GL_DEPTH_STENCIL 0x84F9  // EXT_packed_depth_stencil (not in GL 2.1's gl.h)
+#endif
+#ifndef GL_UNSIGNED_INT_24_8
+#define GL_UNSIGNED_INT_24_8 0x84FA
+#endif
+
 #include <cstdint>
 
 #include "texture/unpack.h"
@@ -48,6 +55,19 @@ void drawColorPixels(Context& ctx, const PixelImage& image);
 // their depth from the image (depth scale and bias applied) and the raster
 // colour; they go through the depth test and the other operations.
 void drawDepthPixels(Context& ctx, const PixelImage& image);
+
+// glDrawPixels(GL_STENCIL_INDEX) and glDrawPixels(GL_DEPTH_STENCIL,
+// GL_UNSIGNED_INT_24_8) (§3.6.4, EXT_packed_depth_stencil): the same quad,
+// whose fragments write the image's stencil values under the front stencil
+// write mask (and its depths under the depth mask), whatever the stencil,
+// depth and alpha tests; no colour. The scissor applies.
+void drawStencilPixels(Context& ctx, const PixelImage& image);
+
+// glCopyPixels(GL_DEPTH), (GL_STENCIL) and (GL_DEPTH_STENCIL) (§4.3.3): the
+// source rectangle of the depth and stencil buffer, read whole first, drawn
+// as the glDrawPixels of its values; GL_DEPTH's fragments have the current
+// colour and go through the fragment operations.
+void copyDepthStencilPixels(Context& ctx, int x, int y, int width, int height, GLenum type);
 
 // glCopyPixels(GL_COLOR) (§4.3.3): the source rectangle of the read buffer,
 // read whole first, drawn as glDrawPixels draws at the raster position.

@@ -530,6 +530,8 @@ TEST_F(StateQueryTest, AdvertisedExtensionsHaveTheirCommands) {
       {"GL_ARB_texture_non_power_of_two", {}},
       {"GL_EXT_bgra", {}},
       {"GL_EXT_packed_pixels", {}},
+      {"GL_ARB_pixel_buffer_object", {}},
+      {"GL_EXT_pixel_buffer_object", {}},
       {"GL_EXT_texture", {}},
       {"GL_EXT_texture_edge_clamp", {}},
       {"GL_EXT_texture_env_add", {}},

@@ -19,14 +19,20 @@ bool oneOf(GLenum v, std::initializer_list<GLenum> allowed) {
 
 // Validates and stores one array's pointer: a negative stride, a type or a
 // size the array does not take is an error and changes nothing (GL 2.1 §2.8).
+// `bgra`: the colour arrays also take the size GL_BGRA (EXT_vertex_array_bgra),
+// of unsigned bytes only (else GL_INVALID_OPERATION, as Mesa).
 template <typename Pick>
 void setPointer(Pick which, GLint size, GLint minSize, GLint maxSize, GLenum type,
-                std::initializer_list<GLenum> types, GLsizei stride, const void* pointer) {
+                std::initializer_list<GLenum> types, GLsizei stride, const void* pointer, bool bgra = false) {
   Context* ctx = api::contextForQuery();
   if (!ctx) return;
   if (stride < 0) return ctx->recordError(GL_INVALID_VALUE);
   if (!oneOf(type, types)) return ctx->recordError(GL_INVALID_ENUM);
-  if (size < minSize || size > maxSize) return ctx->recordError(GL_INVALID_VALUE);
+  if (bgra && size == GL_BGRA) {
+    if (type != GL_UNSIGNED_BYTE) return ctx->recordError(GL_INVALID_OPERATION);
+  } else if (size < minSize || size > maxSize) {
+    return ctx->recordError(GL_INVALID_VALUE);
+  }
   ClientArray& a = which(ctx->vertexArray);
   a.size = size;
   a.type = type;
@@ -98,11 +104,11 @@ GLAPI void APIENTRY glNormalPointer(GLenum type, GLsizei stride, const void* poi
 }
 GLAPI void APIENTRY glColorPointer(GLint size, GLenum type, GLsizei stride, const void* pointer) {
   setPointer([](VertexArrayAttrib& v) -> ClientArray& { return v.color; }, size, 3, 4, type, kColorTypes,
-             stride, pointer);
+             stride, pointer, true);
 }
 GLAPI void APIENTRY glSecondaryColorPointer(GLint size, GLenum type, GLsizei stride, const void* pointer) {
   setPointer([](VertexArrayAttrib& v) -> ClientArray& { return v.secondaryColor; }, size, 3, 3, type,
-             kColorTypes, stride, pointer);
+             kColorTypes, stride, pointer, true);
 }
 GLAPI void APIENTRY glFogCoordPointer(GLenum type, GLsizei stride, const void* pointer) {
   setPointer([](VertexArrayAttrib& v) -> ClientArray& { return v.fogCoord; }, 1, 1, 1, type,

@@ -119,8 +119,20 @@ void colorAs(const uint8_t* bytes, int size, C3 color3, C4 color4) {
     color4(v);
 }
 
+// EXT_vertex_array_bgra's unsigned bytes, in GL's order.
+const uint8_t* bgraToRgba(const uint8_t* p, uint8_t (&rgba)[4]) {
+  if (!p) return nullptr;
+  rgba[0] = p[2];
+  rgba[1] = p[1];
+  rgba[2] = p[0];
+  rgba[3] = p[3];
+  return rgba;
+}
+
 void arrayColor(const pipeline::ArrayView& a, uint32_t i) {
   const uint8_t* p = a.elementBytes(i);
+  uint8_t rgba[4];
+  if (a.bgra) p = bgraToRgba(p, rgba);
   switch (a.type) {
     case GL_BYTE: return colorAs<GLbyte>(p, a.size, glColor3bv, glColor4bv);
     case GL_UNSIGNED_BYTE: return colorAs<GLubyte>(p, a.size, glColor3ubv, glColor4ubv);
@@ -178,6 +190,8 @@ void arrayVertex(const pipeline::ArrayView& a, uint32_t i) {
 
 void arraySecondaryColor(const pipeline::ArrayView& a, uint32_t i) {
   const uint8_t* p = a.elementBytes(i);
+  uint8_t rgba[4];
+  if (a.bgra) p = bgraToRgba(p, rgba);
   auto none = [](const void*) {};
   switch (a.type) {
     case GL_BYTE: return colorAs<GLbyte>(p, 3, glSecondaryColor3bv, none);

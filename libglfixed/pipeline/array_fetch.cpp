@@ -54,7 +54,8 @@ float component(GLenum type, const uint8_t* p, bool normalized) {
 
 // false: the array sources a mapped buffer.
 bool resolve(const Context& ctx, const ClientArray& a, bool normalized, ArrayView& v) {
-  v.size = a.size;
+  v.size = componentCount(a);
+  v.bgra = a.size == GL_BGRA;
   v.type = a.type;
   v.normalized = normalized;
   v.stride = effectiveStride(a);
@@ -130,6 +131,7 @@ glm::vec4 ArrayView::read(uint32_t i, glm::vec4 fill) const {
     return fill;
   }
   for (int c = 0; c < size && c < 4; ++c) fill[c] = component(type, p + c * bytes, normalized);
+  if (bgra) std::swap(fill[0], fill[2]);
   return fill;
 }
 

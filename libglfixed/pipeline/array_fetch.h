@@ -30,6 +30,7 @@ struct ArrayView {
   GLint size = 0;
   GLenum type = GL_FLOAT;
   bool normalized = false;  // table 2.9: integer colours and normals
+  bool bgra = false;        // EXT_vertex_array_bgra: components 0 and 2 swapped
   // Element i; components the array lacks come from `fill`.
   glm::vec4 read(uint32_t i, glm::vec4 fill) const;
   // Element i's bytes, or null where it would read past the buffer's end.

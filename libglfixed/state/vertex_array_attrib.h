@@ -70,8 +70,13 @@ inline int componentBytes(GLenum type) {
 }
 
 // The distance between two elements: the stride, or the element's size when 0.
+// The components an element holds: GL_BGRA (EXT_vertex_array_bgra, colour
+// arrays of unsigned bytes) is four, stored blue, green, red, alpha.
+inline int componentCount(const ClientArray& a) { return a.size == GL_BGRA ? 4 : a.size; }
+
 inline size_t effectiveStride(const ClientArray& a) {
-  return a.stride != 0 ? static_cast<size_t>(a.stride) : static_cast<size_t>(a.size) * componentBytes(a.type);
+  return a.stride != 0 ? static_cast<size_t>(a.stride)
+                       : static_cast<size_t>(componentCount(a)) * componentBytes(a.type);
 }
 
 }  // namespace glfixed

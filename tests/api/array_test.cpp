@@ -552,3 +552,61 @@ TEST_F(ArrayTest, EnableOfAnArrayIsItsClientState) {
 }
 
 }  // namespace
+
+// EXT_vertex_array_bgra: the colour arrays take the size GL_BGRA, of
+// unsigned bytes stored blue, green, red, alpha (Mesa 22.3, measured).
+TEST_F(ArrayTest, BgraColorArrays) {
+  static const GLubyte bgra[4 * 4] = {10, 20, 30, 40, 10, 20, 30, 40, 10, 20, 30, 40, 10, 20, 30, 40};
+  glColorPointer(GL_BGRA, GL_FLOAT, 0, bgra);
+  EXPECT_GL_ERROR(GL_INVALID_OPERATION);
+  glColorPointer(GL_BGRA, GL_BYTE, 0, bgra);
+  EXPECT_GL_ERROR(GL_INVALID_OPERATION);
+  glColorPointer(GL_BGRA, 0x1234, 0, bgra);
+  EXPECT_GL_ERROR(GL_INVALID_ENUM);
+  glVertexPointer(GL_BGRA, GL_FLOAT, 0, bgra);
+  EXPECT_GL_ERROR(GL_INVALID_VALUE);
+  glTexCoordPointer(GL_BGRA, GL_UNSIGNED_BYTE, 0, bgra);
+  EXPECT_GL_ERROR(GL_INVALID_ENUM);
+  EXPECT_EQ(GetInt(GL_COLOR_ARRAY_SIZE), 4);  // nothing changed
+  glColorPointer(GL_BGRA, GL_UNSIGNED_BYTE, 0, bgra);
+  glSecondaryColorPointer(GL_BGRA, GL_UNSIGNED_BYTE, 0, bgra);
+  EXPECT_NO_GL_ERROR();
+  EXPECT_EQ(GetInt(GL_COLOR_ARRAY_SIZE), GL_BGRA);
+  EXPECT_EQ(GetInt(GL_SECONDARY_COLOR_ARRAY_SIZE), GL_BGRA);
+
+  static const GLfloat quad[8] = {-1, -1, 1, -1, 1, 1, -1, 1};
+  glVertexPointer(2, GL_FLOAT, 0, quad);
+  glEnableClientState(GL_VERTEX_ARRAY);
+  glEnableClientState(GL_COLOR_ARRAY);
+  auto pixel = [] {
+    std::array<int, 4> p{};
+    GLubyte b[4] = {};
+    glReadPixels(5, 5, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, b);
+    for (int i = 0; i < 4; ++i) p[i] = b[i];
+    return p;
+  };
+  glDrawArrays(GL_QUADS, 0, 4);
+  EXPECT_EQ(pixel(), (std::array<int, 4>{30, 20, 10, 40}));
+  // glInterleavedArrays sets plain sizes again.
+  glInterleavedArrays(GL_C4UB_V2F, 0, nullptr);
+  EXPECT_EQ(GetInt(GL_COLOR_ARRAY_SIZE), 4);
+  EXPECT_NO_GL_ERROR();
+}
+
+// glArrayElement reads a GL_BGRA colour array in the same order
+// (EXT_vertex_array_bgra); Mesa 22.3 passes its bytes on unswapped.
+TEST_F(ArrayTest, BgraColorArrayElement) {
+  GLFX_SKIP_ON_MESA("glArrayElement takes a GL_BGRA colour array's bytes as red, green, blue, alpha");
+  static const GLubyte bgra[4 * 4] = {10, 20, 30, 40, 10, 20, 30, 40, 10, 20, 30, 40, 10, 20, 30, 40};
+  static const GLfloat quad[8] = {-1, -1, 1, -1, 1, 1, -1, 1};
+  glColorPointer(GL_BGRA, GL_UNSIGNED_BYTE, 0, bgra);
+  glVertexPointer(2, GL_FLOAT, 0, quad);
+  glEnableClientState(GL_VERTEX_ARRAY);
+  glEnableClientState(GL_COLOR_ARRAY);
+  glBegin(GL_QUADS);
+  for (GLint i = 0; i < 4; ++i) glArrayElement(i);
+  glEnd();
+  GLubyte b[4] = {};
+  glReadPixels(5, 5, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, b);
+  EXPECT_EQ((std::array<int, 4>{b[0], b[1], b[2], b[3]}), (std::array<int, 4>{30, 20, 10, 40}));
+}

@@ -333,6 +333,7 @@ GLAPI void APIENTRY glGetFramebufferAttachmentParameteriv(GLenum target, GLenum 
   }
   // ARB_framebuffer_object's format queries: the attached image's sizes.
   int sizes[6] = {0, 0, 0, 0, 0, 0};  // red, green, blue, alpha, depth, stencil
+  bool floatChannels = false;
   if (a.type == GL_TEXTURE) {
     if (const texture::TextureImage* image = attachedImage(a, *ctx->textures)) {
       const texture::ComponentSizes c = texture::componentSizes(image->format);
@@ -341,13 +342,14 @@ GLAPI void APIENTRY glGetFramebufferAttachmentParameteriv(GLenum target, GLenum 
     }
   } else if (const Renderbuffer* rb = ctx->framebufferObjects->findRenderbuffer(a.name)) {
     const RenderbufferFormat& f = rb->format;
+    floatChannels = f.floatChannels;
     const int v[6] = {f.red, f.green, f.blue, f.alpha, f.depth, f.stencil};
     std::copy(v, v + 6, sizes);
   }
   switch (pname) {
     case 0x8210: *params = GL_LINEAR; return;  // GL_FRAMEBUFFER_ATTACHMENT_COLOR_ENCODING
-    case 0x8211:                               // _COMPONENT_TYPE: unsigned normalized
-      *params = attachment == kStencilAttachment ? GL_UNSIGNED_INT : 0x8C17;
+    case 0x8211:  // _COMPONENT_TYPE: unsigned normalized, float for the float renderbuffers (probed)
+      *params = attachment == kStencilAttachment ? GL_UNSIGNED_INT : floatChannels ? GL_FLOAT : 0x8C17;
       return;
     case 0x8212:
     case 0x8213:

@@ -247,3 +247,55 @@ TEST_F(FramebufferFormatTest, DrawIntoEveryColourFormat) {
 }
 
 }  // namespace
+
+namespace {
+
+// glGetFramebufferAttachmentParameteriv on the window system's framebuffer
+// (Mesa, probed): its colour, depth and stencil buffers with their sizes,
+// a right buffer GL_NONE, and the errors.
+TEST_F(FramebufferFormatTest, WindowFramebufferAttachmentQueries) {
+  void (*getFramebufferAttachmentParameteriv)(GLenum, GLenum, GLenum, GLint*);
+  load(getFramebufferAttachmentParameteriv, "glGetFramebufferAttachmentParameteriv");
+  ASSERT_NE(getFramebufferAttachmentParameteriv, nullptr);
+  constexpr GLenum kObjectType = 0x8CD0, kObjectName = 0x8CD1, kTextureLevel = 0x8CD2, kEncoding = 0x8210,
+                   kComponentType = 0x8211, kRedSize = 0x8212, kDepthSize = 0x8216, kStencilSize = 0x8217;
+  auto query = [&](GLenum target, GLenum attachment, GLenum pname) {
+    GLint v = -7;
+    getFramebufferAttachmentParameteriv(target, attachment, pname, &v);
+    return v;
+  };
+  const GLint depthBits = GetInt(GL_DEPTH_BITS), stencilBits = GetInt(GL_STENCIL_BITS);
+  for (GLenum buffer : {GLenum(GL_FRONT_LEFT), GLenum(GL_BACK_LEFT), GLenum(GL_FRONT), GLenum(GL_BACK)}) {
+    EXPECT_EQ(query(kFramebuffer, buffer, kObjectType), 0x8218);  // GL_FRAMEBUFFER_DEFAULT
+    EXPECT_EQ(query(kFramebuffer, buffer, kEncoding), GL_LINEAR);
+    EXPECT_EQ(query(kFramebuffer, buffer, kComponentType), 0x8C17);  // GL_UNSIGNED_NORMALIZED
+    for (int k = 0; k < 4; ++k) EXPECT_EQ(query(kFramebuffer, buffer, kRedSize + k), GetInt(GL_RED_BITS + k));
+    EXPECT_EQ(query(kFramebuffer, buffer, kDepthSize), 0);
+    EXPECT_NO_GL_ERROR();
+    query(kFramebuffer, buffer, kObjectName);
+    EXPECT_GL_ERROR(GL_INVALID_ENUM);
+    query(kFramebuffer, buffer, kTextureLevel);
+    EXPECT_GL_ERROR(GL_INVALID_ENUM);
+  }
+  EXPECT_EQ(query(0x8CA9, GL_BACK_LEFT, kRedSize), 8);  // GL_DRAW_FRAMEBUFFER
+  EXPECT_EQ(query(0x8CA8, GL_FRONT_LEFT, kRedSize), 8);  // GL_READ_FRAMEBUFFER
+  if (depthBits > 0) {
+    // The depth and stencil attachments both tell the depth and stencil bits.
+    for (GLenum buffer : {GLenum(GL_DEPTH), GLenum(GL_STENCIL)}) {
+      if (buffer == GL_STENCIL && stencilBits == 0) continue;
+      EXPECT_EQ(query(kFramebuffer, buffer, kObjectType), 0x8218);
+      EXPECT_EQ(query(kFramebuffer, buffer, kRedSize), 0);
+      EXPECT_EQ(query(kFramebuffer, buffer, kDepthSize), depthBits);
+      EXPECT_EQ(query(kFramebuffer, buffer, kStencilSize), stencilBits);
+    }
+  }
+  // No right buffer: GL_NONE, then GL_INVALID_OPERATION.
+  EXPECT_EQ(query(kFramebuffer, GL_FRONT_RIGHT, kObjectType), GL_NONE);
+  query(kFramebuffer, GL_FRONT_RIGHT, kRedSize);
+  EXPECT_GL_ERROR(GL_INVALID_OPERATION);
+  query(kFramebuffer, kColor0, kObjectType);
+  EXPECT_GL_ERROR(GL_INVALID_ENUM);
+  EXPECT_NO_GL_ERROR();
+}
+
+}  // namespace

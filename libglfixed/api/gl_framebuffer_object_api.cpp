@@ -363,7 +363,8 @@ GLAPI void APIENTRY glGetFramebufferAttachmentParameteriv(GLenum target, GLenum 
   int sizes[6] = {0, 0, 0, 0, 0, 0};  // red, green, blue, alpha, depth, stencil
   bool floatChannels = false;
   if (a.type == GL_TEXTURE) {
-    if (const texture::TextureImage* image = attachedImage(a, *ctx->textures)) {
+    const texture::TextureImage* image = attachedImage(a, *ctx->textures);
+    if (image && image->defined()) {  // an undefined level: every size 0 (probed)
       const texture::ComponentSizes c = texture::componentSizes(image->format);
       const int v[6] = {c.red, c.green, c.blue, c.alpha, c.depth, 0};
       std::copy(v, v + 6, sizes);

@@ -39,8 +39,19 @@ void ColorBuffer::setUnormBits(int r, int g, int b, int a) {
   for (int k = 0; k < 4; ++k) bits[k] = static_cast<uint8_t>(v[k]);
 }
 
+void ColorBuffer::setChannels(ChannelType type, int bpp, int r, int g, int b, int a) {
+  format = PixelFormat::kRGBA;
+  channels = type;
+  bytesPerPixel = bpp;
+  red = r;
+  green = g;
+  blue = b;
+  alpha = a;
+}
+
 int ColorBuffer::channelBits(int k) const {
-  if (k == 3 && alpha < 0) return 0;
+  const int offset[4] = {red, green, blue, alpha};
+  if (offset[k] < 0 || (luminance && k < 3)) return 0;
   switch (channels) {
     case ChannelType::kUnormBits: return bits[k];
     case ChannelType::kUnorm8: return 8;
@@ -110,11 +121,13 @@ void ColorBuffer::readConverted(int x, int y, uint8_t rgba[4]) const {
 }
 
 void ColorBuffer::readFloat(int x, int y, float rgba[4]) const {
+  // A channel not stored: colour 0, alpha 1.
+  const auto missing = [](int k) { return k == 3 ? 1.0f : 0.0f; };
   const uint8_t* p = pixel(x, y);
   const int offset[4] = {red, green, blue, alpha};
   switch (channels) {
     case ChannelType::kUnorm8:
-      for (int k = 0; k < 4; ++k) rgba[k] = offset[k] >= 0 ? p[offset[k]] * (1.0f / 255.0f) : 1.0f;
+      for (int k = 0; k < 4; ++k) rgba[k] = offset[k] >= 0 ? p[offset[k]] * (1.0f / 255.0f) : missing(k);
       return;
     case ChannelType::kRGB565: {
       const uint16_t w = load16(p);
@@ -132,7 +145,7 @@ void ColorBuffer::readFloat(int x, int y, float rgba[4]) const {
       return;
     case ChannelType::kUnorm16:
       for (int k = 0; k < 4; ++k)
-        rgba[k] = offset[k] >= 0 ? static_cast<float>(load16(p + 2 * offset[k])) * (1.0f / 65535.0f) : 1.0f;
+        rgba[k] = offset[k] >= 0 ? static_cast<float>(load16(p + 2 * offset[k])) * (1.0f / 65535.0f) : missing(k);
       return;
     case ChannelType::kFloat32:
       for (int k = 0; k < 4; ++k) {

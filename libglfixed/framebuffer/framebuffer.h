@@ -64,6 +64,12 @@ struct ColorBuffer {
   // kUnormBits, one byte a channel (red, green, blue, alpha at bytes 0..3);
   // a channel of 0 bits is not stored (alpha reads 1).
   void setUnormBits(int r, int g, int b, int a);
+  // 8- or 16-bit channels (`type` kUnorm8 or kUnorm16) at the given channel
+  // indices (-1: not stored), `bytesPerPixel` in all: the texels of
+  // alpha, luminance and luminance-alpha textures.
+  void setChannels(ChannelType type, int bytesPerPixel, int r, int g, int b, int a);
+  // Luminance: GL_RED_BITS... report 0, as Mesa does for such attachments.
+  bool luminance = false;
   // 16-bit or float channels: the fragment stage's wide path.
   bool wide() const { return channels >= ChannelType::kUnorm16; }
   bool hasAlpha() const { return alpha >= 0; }
@@ -75,20 +81,22 @@ struct ColorBuffer {
   }
   // Bytes in and out: the 8-bit formats' own; others convert (5-6-5: bit
   // replication in, truncation out, as llvmpipe's 8-bit blend path does).
+  // A colour channel not stored (an alpha or luminance attachment) reads 0,
+  // alpha 1 (GL 3.0 §4.3.2: a luminance buffer reads as (L, 0, 0, 1)).
   void write(int x, int y, const uint8_t rgba[4]) const {
     if (channels != ChannelType::kUnorm8) return writeConverted(x, y, rgba);
     uint8_t* p = pixel(x, y);
-    p[red] = rgba[0];
-    p[green] = rgba[1];
-    p[blue] = rgba[2];
+    if (red >= 0) p[red] = rgba[0];
+    if (green >= 0) p[green] = rgba[1];
+    if (blue >= 0) p[blue] = rgba[2];
     if (alpha >= 0) p[alpha] = rgba[3];
   }
   void read(int x, int y, uint8_t rgba[4]) const {
     if (channels != ChannelType::kUnorm8) return readConverted(x, y, rgba);
     const uint8_t* p = pixel(x, y);
-    rgba[0] = p[red];
-    rgba[1] = p[green];
-    rgba[2] = p[blue];
+    rgba[0] = red >= 0 ? p[red] : 0;
+    rgba[1] = green >= 0 ? p[green] : 0;
+    rgba[2] = blue >= 0 ? p[blue] : 0;
     rgba[3] = alpha >= 0 ? p[alpha] : 255;
   }
   // Floats in and out, in the buffer's precision: unorm channels read as

@@ -62,6 +62,10 @@ const FormatCase kCases[] = {
     {false, 0x805A, {16, 16, 16, 16}, 0x7454d310u, 0x49b70651u, 0x0aa9c3d0u, 0x49b70651u},
     {false, 0x8C43, {8, 8, 8, 8}, 0xec22a789u, 0x09abfc1du, 0xac092f60u, 0x09abfc1du},  // GL_SRGB8_ALPHA8
     {false, 0x8C41, {8, 8, 8, 0}, 0xbda075cdu, 0x4f676471u, 0x35caa80du, 0x4f676471u},  // GL_SRGB8
+    // Luminance-alpha textures: red goes into the luminance, read back as
+    // (L, 0, 0, A); the luminance reports no size.
+    {false, 0x8045, {0, 0, 0, 8}, 0x987c007fu, 0xdee99a0du, 0x6f50d625u, 0xdee99a0du},    // GL_LUMINANCE8_ALPHA8
+    {false, 0x8048, {0, 0, 0, 16}, 0x2bfbadc9u, 0x74ba3e29u, 0x0ff6e4e9u, 0x74ba3e29u},   // GL_LUMINANCE16_ALPHA16
 };
 // clang-format on
 

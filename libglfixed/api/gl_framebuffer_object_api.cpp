@@ -132,6 +132,47 @@ void detachFromBound(Context& ctx, GLenum type, GLuint name) {
   }
 }
 
+// glGetFramebufferAttachmentParameteriv of the window system's framebuffer,
+// as Mesa answers it (probed on OSMesa): its colour buffers (GL_FRONT_LEFT,
+// GL_BACK_LEFT, GL_FRONT, GL_BACK; a single-buffered surface's back is its
+// front), GL_DEPTH and GL_STENCIL are GL_FRAMEBUFFER_DEFAULT with their sizes
+// (the depth and stencil attachments both report the depth and stencil bits),
+// a buffer the surface lacks (a right buffer) GL_NONE and then
+// GL_INVALID_OPERATION; OBJECT_NAME GL_INVALID_ENUM, and so the texture
+// pnames on a buffer that is there.
+void windowAttachmentParameter(Context& ctx, GLenum attachment, GLenum pname, GLint* params) {
+  const bool colour = attachment == GL_FRONT_LEFT || attachment == GL_BACK_LEFT || attachment == GL_FRONT ||
+                      attachment == GL_BACK;
+  const bool right = attachment == GL_FRONT_RIGHT || attachment == GL_BACK_RIGHT;
+  const bool depthStencil = attachment == GL_DEPTH || attachment == GL_STENCIL;
+  if (!colour && !right && !depthStencil) return ctx.recordError(GL_INVALID_ENUM);
+  const Framebuffer& win = ctx.windowFramebuffer();
+  const bool present = colour ? win.front.pixels != nullptr
+                       : depthStencil ? (attachment == GL_DEPTH ? win.depth.bits() : win.depth.stencilBits()) != 0
+                                      : false;
+  if (pname == 0x8CD0) {  // GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE
+    *params = present ? static_cast<GLint>(kFramebufferDefault) : GL_NONE;
+    return;
+  }
+  if (pname == 0x8CD1) return ctx.recordError(GL_INVALID_ENUM);  // OBJECT_NAME
+  if (!present) return ctx.recordError(GL_INVALID_OPERATION);
+  const bool known = pname == 0x8210 || pname == 0x8211 || (pname >= 0x8212 && pname <= 0x8217);
+  if (!known) return ctx.recordError(GL_INVALID_ENUM);
+  const ColorBuffer& c = win.front;
+  int sizes[6] = {0, 0, 0, 0, 0, 0};
+  if (colour)
+    for (int k = 0; k < 4; ++k) sizes[k] = c.channelBits(k);
+  else
+    sizes[4] = win.depth.bits(), sizes[5] = win.depth.stencilBits();
+  switch (pname) {
+    case 0x8210: *params = GL_LINEAR; return;  // COLOR_ENCODING
+    case 0x8211:                               // COMPONENT_TYPE
+      *params = colour && c.channels == ChannelType::kFloat32 ? GL_FLOAT : 0x8C17;
+      return;
+    default: *params = sizes[pname - 0x8212]; return;
+  }
+}
+
 void renderbufferStorage(GLenum target, GLsizei samples, GLenum internalFormat, GLsizei width, GLsizei height,
                          bool multisample) {
   Context* ctx = api::contextForSetter();
@@ -285,20 +326,7 @@ GLAPI void APIENTRY glGetFramebufferAttachmentParameteriv(GLenum target, GLenum 
   if (!ctx) return;
   FramebufferObject* fb = nullptr;
   if (!targetObject(*ctx, target, &fb)) return;
-  if (!fb) {
-    // The window system's: its buffers are GL_FRAMEBUFFER_DEFAULT (probed).
-    const bool windowBuffer = attachment == GL_FRONT_LEFT || attachment == GL_BACK_LEFT ||
-                              attachment == GL_FRONT_RIGHT || attachment == GL_BACK_RIGHT ||
-                              attachment == GL_DEPTH || attachment == GL_STENCIL;
-    if (!windowBuffer) return ctx->recordError(GL_INVALID_ENUM);
-    if (pname == 0x8CD0)
-      *params = static_cast<GLint>(kFramebufferDefault);
-    else if (pname == 0x8CD1)
-      *params = 0;
-    else
-      ctx->recordError(GL_INVALID_ENUM);
-    return;
-  }
+  if (!fb) return windowAttachmentParameter(*ctx, attachment, pname, params);
   if (!attachmentPointValid(*ctx, *fb, attachment)) return;
   const Attachment& a = attachment == kDepthStencilAttachment ? fb->depth : *fb->attachment(attachment);
   if (attachment == kDepthStencilAttachment && !(fb->depth == fb->stencil))
@@ -333,21 +361,24 @@ GLAPI void APIENTRY glGetFramebufferAttachmentParameteriv(GLenum target, GLenum 
   }
   // ARB_framebuffer_object's format queries: the attached image's sizes.
   int sizes[6] = {0, 0, 0, 0, 0, 0};  // red, green, blue, alpha, depth, stencil
+  bool floatChannels = false;
   if (a.type == GL_TEXTURE) {
-    if (const texture::TextureImage* image = attachedImage(a, *ctx->textures)) {
+    const texture::TextureImage* image = attachedImage(a, *ctx->textures);
+    if (image && image->defined()) {  // an undefined level: every size 0 (probed)
       const texture::ComponentSizes c = texture::componentSizes(image->format);
       const int v[6] = {c.red, c.green, c.blue, c.alpha, c.depth, 0};
       std::copy(v, v + 6, sizes);
     }
   } else if (const Renderbuffer* rb = ctx->framebufferObjects->findRenderbuffer(a.name)) {
     const RenderbufferFormat& f = rb->format;
+    floatChannels = f.floatChannels;
     const int v[6] = {f.red, f.green, f.blue, f.alpha, f.depth, f.stencil};
     std::copy(v, v + 6, sizes);
   }
   switch (pname) {
     case 0x8210: *params = GL_LINEAR; return;  // GL_FRAMEBUFFER_ATTACHMENT_COLOR_ENCODING
-    case 0x8211:                               // _COMPONENT_TYPE: unsigned normalized
-      *params = attachment == kStencilAttachment ? GL_UNSIGNED_INT : 0x8C17;
+    case 0x8211:  // _COMPONENT_TYPE: unsigned normalized, float for the float renderbuffers (probed)
+      *params = attachment == kStencilAttachment ? GL_UNSIGNED_INT : floatChannels ? GL_FLOAT : 0x8C17;
       return;
     case 0x8212:
     case 0x8213:

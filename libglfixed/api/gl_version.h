@@ -5,9 +5,10 @@
 // GL 2.0 needs GLSL, which the library does not have: the version is 1.5,
 // the last one without shaders. Blending and the logic op
 // (fragment/blend.inc), the stencil test, fog (fragment/fog.inc) and most
-// pixel rectangles are here; the framebuffer-object commands exist but their
-// extensions are not named until every format Mesa draws into is drawn
-// (piglit switches to FBO paths on seeing them).
+// pixel rectangles are here; so are framebuffer objects (ARB and
+// EXT_framebuffer_object, EXT_framebuffer_blit). EXT_packed_depth_stencil is
+// not named: DEPTH_STENCIL textures, glDrawPixels and glCopyPixels of
+// GL_DEPTH_STENCIL are not here yet (its renderbuffers and glReadPixels are).
 // The extensions listed are those whose every command and enum works.
 #pragma once
 
@@ -19,7 +20,9 @@ constexpr const char* kGLVersionString = "1.5 libglfixed 0.1.0";
 constexpr const char* kGLVendorString = "libglfixed";
 constexpr const char* kGLRendererString = "libglfixed fixed-function software renderer";
 constexpr const char* kGLExtensionsString =
-    "GL_ARB_depth_texture GL_ARB_multisample GL_ARB_multitexture GL_ARB_occlusion_query GL_ARB_pixel_buffer_object GL_ARB_point_parameters GL_ARB_point_sprite GL_ARB_provoking_vertex "
+    "GL_ARB_depth_texture GL_ARB_framebuffer_object GL_ARB_multisample GL_ARB_multitexture "
+    "GL_ARB_occlusion_query GL_ARB_pixel_buffer_object GL_ARB_point_parameters GL_ARB_point_sprite "
+    "GL_ARB_provoking_vertex "
     "GL_ARB_shadow GL_ARB_texture_border_clamp "
     "GL_ARB_texture_cube_map GL_ARB_texture_env_add GL_ARB_texture_env_combine GL_ARB_texture_env_crossbar "
     "GL_ARB_texture_env_dot3 GL_ARB_texture_mirrored_repeat GL_ARB_texture_non_power_of_two "
@@ -27,7 +30,8 @@ constexpr const char* kGLExtensionsString =
     "GL_ATI_separate_stencil GL_EXT_bgra "
     "GL_EXT_blend_color GL_EXT_blend_equation_separate GL_EXT_blend_func_separate GL_EXT_blend_minmax "
     "GL_EXT_blend_subtract GL_EXT_copy_texture "
-    "GL_EXT_draw_range_elements GL_EXT_fog_coord GL_EXT_multi_draw_arrays GL_EXT_packed_pixels GL_EXT_pixel_buffer_object "
+    "GL_EXT_draw_range_elements GL_EXT_fog_coord GL_EXT_framebuffer_blit GL_EXT_framebuffer_object "
+    "GL_EXT_multi_draw_arrays GL_EXT_packed_pixels GL_EXT_pixel_buffer_object "
     "GL_EXT_point_parameters GL_EXT_provoking_vertex GL_EXT_rescale_normal GL_EXT_separate_specular_color "
     "GL_EXT_shadow_funcs GL_EXT_stencil_two_side GL_EXT_stencil_wrap GL_EXT_subtexture "
     "GL_EXT_texture GL_EXT_texture3D GL_EXT_texture_edge_clamp GL_EXT_texture_env_add "

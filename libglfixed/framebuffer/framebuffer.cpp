@@ -27,9 +27,33 @@ void ColorBuffer::setFormat(PixelFormat f) {
   }
 }
 
+void ColorBuffer::setUnormBits(int r, int g, int b, int a) {
+  format = PixelFormat::kRGBA;
+  channels = ChannelType::kUnormBits;
+  bytesPerPixel = 4;
+  red = 0;
+  green = 1;
+  blue = 2;
+  alpha = a > 0 ? 3 : -1;
+  const int v[4] = {r, g, b, a};
+  for (int k = 0; k < 4; ++k) bits[k] = static_cast<uint8_t>(v[k]);
+}
+
+void ColorBuffer::setChannels(ChannelType type, int bpp, int r, int g, int b, int a) {
+  format = PixelFormat::kRGBA;
+  channels = type;
+  bytesPerPixel = bpp;
+  red = r;
+  green = g;
+  blue = b;
+  alpha = a;
+}
+
 int ColorBuffer::channelBits(int k) const {
-  if (k == 3 && alpha < 0) return 0;
+  const int offset[4] = {red, green, blue, alpha};
+  if (offset[k] < 0 || (luminance && k < 3)) return 0;
   switch (channels) {
+    case ChannelType::kUnormBits: return bits[k];
     case ChannelType::kUnorm8: return 8;
     case ChannelType::kRGB565: return k == 1 ? 6 : 5;
     case ChannelType::kUnorm16: return 16;
@@ -58,6 +82,12 @@ float clamp01(float v) { return v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f; }
 
 void ColorBuffer::writeConverted(int x, int y, const uint8_t rgba[4]) const {
   uint8_t* p = pixel(x, y);
+  if (channels == ChannelType::kUnormBits) {
+    const int offset[4] = {red, green, blue, alpha};
+    for (int k = 0; k < 4; ++k)
+      if (offset[k] >= 0) p[offset[k]] = byteToUnormBits(rgba[k], bits[k]);
+    return;
+  }
   if (channels == ChannelType::kRGB565) {
     // llvmpipe's 8-bit path keeps the top bits of each byte.
     store16(p, static_cast<uint16_t>(((rgba[0] >> 3) << 11) | ((rgba[1] >> 2) << 5) | (rgba[2] >> 3)));
@@ -69,6 +99,12 @@ void ColorBuffer::writeConverted(int x, int y, const uint8_t rgba[4]) const {
 }
 
 void ColorBuffer::readConverted(int x, int y, uint8_t rgba[4]) const {
+  if (channels == ChannelType::kUnormBits) {
+    const uint8_t* p = pixel(x, y);
+    const int offset[4] = {red, green, blue, alpha};
+    for (int k = 0; k < 4; ++k) rgba[k] = offset[k] >= 0 ? unormBitsToByte(p[offset[k]], bits[k]) : 255;
+    return;
+  }
   if (channels == ChannelType::kRGB565) {
     // Bit replication: the same bytes as rint(v * 255 / max).
     const uint16_t w = load16(pixel(x, y));
@@ -85,11 +121,13 @@ void ColorBuffer::readConverted(int x, int y, uint8_t rgba[4]) const {
 }
 
 void ColorBuffer::readFloat(int x, int y, float rgba[4]) const {
+  // A channel not stored: colour 0, alpha 1.
+  const auto missing = [](int k) { return k == 3 ? 1.0f : 0.0f; };
   const uint8_t* p = pixel(x, y);
   const int offset[4] = {red, green, blue, alpha};
   switch (channels) {
     case ChannelType::kUnorm8:
-      for (int k = 0; k < 4; ++k) rgba[k] = offset[k] >= 0 ? p[offset[k]] * (1.0f / 255.0f) : 1.0f;
+      for (int k = 0; k < 4; ++k) rgba[k] = offset[k] >= 0 ? p[offset[k]] * (1.0f / 255.0f) : missing(k);
       return;
     case ChannelType::kRGB565: {
       const uint16_t w = load16(p);
@@ -99,9 +137,15 @@ void ColorBuffer::readFloat(int x, int y, float rgba[4]) const {
       rgba[3] = 1.0f;
       return;
     }
+    case ChannelType::kUnormBits:
+      for (int k = 0; k < 4; ++k) {
+        const float max = static_cast<float>((1u << bits[k]) - 1u);
+        rgba[k] = offset[k] >= 0 ? static_cast<float>(p[offset[k]]) * (1.0f / max) : 1.0f;
+      }
+      return;
     case ChannelType::kUnorm16:
       for (int k = 0; k < 4; ++k)
-        rgba[k] = offset[k] >= 0 ? static_cast<float>(load16(p + 2 * offset[k])) * (1.0f / 65535.0f) : 1.0f;
+        rgba[k] = offset[k] >= 0 ? static_cast<float>(load16(p + 2 * offset[k])) * (1.0f / 65535.0f) : missing(k);
       return;
     case ChannelType::kFloat32:
       for (int k = 0; k < 4; ++k) {
@@ -112,8 +156,13 @@ void ColorBuffer::readFloat(int x, int y, float rgba[4]) const {
   }
 }
 
-void ColorBuffer::writeFloat(int x, int y, const float rgba[4], const bool* mask) const {
+void ColorBuffer::writeFloat(int x, int y, const float rgba[4], const bool* mask, bool halfUp) const {
   uint8_t* p = pixel(x, y);
+  // A clamped channel as an unsigned value of at most `max`.
+  const auto quantize = [halfUp](float v, float max) -> uint32_t {
+    const float scaled = clamp01(v) * max;
+    return static_cast<uint32_t>(halfUp ? std::floor(scaled + 0.5f) : std::nearbyint(scaled));
+  };
   const int offset[4] = {red, green, blue, alpha};
   switch (channels) {
     case ChannelType::kUnorm8:
@@ -124,17 +173,21 @@ void ColorBuffer::writeFloat(int x, int y, const float rgba[4], const bool* mask
       uint32_t w = load16(p);
       for (int k = 0; k < 3; ++k) {
         if (mask && !mask[k]) continue;
-        const uint32_t v =
-            static_cast<uint32_t>(std::nearbyint(clamp01(rgba[k]) * static_cast<float>(kMax565[k])));
+        const uint32_t v = quantize(rgba[k], static_cast<float>(kMax565[k]));
         w = (w & ~(kMax565[k] << kShift565[k])) | (v << kShift565[k]);
       }
       store16(p, static_cast<uint16_t>(w));
       return;
     }
+    case ChannelType::kUnormBits:
+      for (int k = 0; k < 4; ++k)
+        if (offset[k] >= 0 && (!mask || mask[k]))
+          p[offset[k]] = static_cast<uint8_t>(quantize(rgba[k], static_cast<float>((1u << bits[k]) - 1u)));
+      return;
     case ChannelType::kUnorm16:
       for (int k = 0; k < 4; ++k)
         if (offset[k] >= 0 && (!mask || mask[k]))
-          store16(p + 2 * offset[k], static_cast<uint16_t>(std::nearbyint(clamp01(rgba[k]) * 65535.0f)));
+          store16(p + 2 * offset[k], static_cast<uint16_t>(quantize(rgba[k], 65535.0f)));
       return;
     case ChannelType::kFloat32:
       for (int k = 0; k < 4; ++k)

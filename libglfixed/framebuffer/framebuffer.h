@@ -39,9 +39,13 @@ enum class PixelFormat {
 };
 
 // How a ColorBuffer stores a channel. The fragment stage's 8-bit arithmetic
-// serves kUnorm8 and kRGB565 (llvmpipe blends 5-6-5 in bytes); kUnorm16
-// blends in 16-bit fixed point, kFloat32 in float (fragment/wide_color.inc).
-enum class ChannelType : uint8_t { kUnorm8, kRGB565, kUnorm16, kFloat32 };
+// serves kUnorm8, kRGB565 and kUnormBits (llvmpipe blends formats of at most
+// 8 bits a channel in bytes); kUnorm16 blends in 16-bit fixed point, kFloat32
+// in float (fragment/wide_color.inc). kUnormBits: each channel an unsigned
+// value of bits[k] (< 8) bits in a byte of its own, as the texels of GL_RGBA4,
+// GL_RGB5_A1, GL_R3_G3_B2... textures are kept (texture/texel_format.h), and
+// so the renderbuffers of those formats.
+enum class ChannelType : uint8_t { kUnorm8, kRGB565, kUnormBits, kUnorm16, kFloat32 };
 
 struct ColorBuffer {
   uint8_t* pixels = nullptr;  // client memory, not owned
@@ -54,8 +58,18 @@ struct ColorBuffer {
   // the channel's index, 0..3); alpha is -1 where not stored. Unused by kRGB565.
   int red = 0, green = 1, blue = 2, alpha = 3;
   ChannelType channels = ChannelType::kUnorm8;
+  uint8_t bits[4] = {8, 8, 8, 8};  // kUnormBits: each channel's bits (0: not stored)
 
   void setFormat(PixelFormat f);
+  // kUnormBits, one byte a channel (red, green, blue, alpha at bytes 0..3);
+  // a channel of 0 bits is not stored (alpha reads 1).
+  void setUnormBits(int r, int g, int b, int a);
+  // 8- or 16-bit channels (`type` kUnorm8 or kUnorm16) at the given channel
+  // indices (-1: not stored), `bytesPerPixel` in all: the texels of
+  // alpha, luminance and luminance-alpha textures.
+  void setChannels(ChannelType type, int bytesPerPixel, int r, int g, int b, int a);
+  // Luminance: GL_RED_BITS... report 0, as Mesa does for such attachments.
+  bool luminance = false;
   // 16-bit or float channels: the fragment stage's wide path.
   bool wide() const { return channels >= ChannelType::kUnorm16; }
   bool hasAlpha() const { return alpha >= 0; }
@@ -67,20 +81,22 @@ struct ColorBuffer {
   }
   // Bytes in and out: the 8-bit formats' own; others convert (5-6-5: bit
   // replication in, truncation out, as llvmpipe's 8-bit blend path does).
+  // A colour channel not stored (an alpha or luminance attachment) reads 0,
+  // alpha 1 (GL 3.0 §4.3.2: a luminance buffer reads as (L, 0, 0, 1)).
   void write(int x, int y, const uint8_t rgba[4]) const {
     if (channels != ChannelType::kUnorm8) return writeConverted(x, y, rgba);
     uint8_t* p = pixel(x, y);
-    p[red] = rgba[0];
-    p[green] = rgba[1];
-    p[blue] = rgba[2];
+    if (red >= 0) p[red] = rgba[0];
+    if (green >= 0) p[green] = rgba[1];
+    if (blue >= 0) p[blue] = rgba[2];
     if (alpha >= 0) p[alpha] = rgba[3];
   }
   void read(int x, int y, uint8_t rgba[4]) const {
     if (channels != ChannelType::kUnorm8) return readConverted(x, y, rgba);
     const uint8_t* p = pixel(x, y);
-    rgba[0] = p[red];
-    rgba[1] = p[green];
-    rgba[2] = p[blue];
+    rgba[0] = red >= 0 ? p[red] : 0;
+    rgba[1] = green >= 0 ? p[green] : 0;
+    rgba[2] = blue >= 0 ? p[blue] : 0;
     rgba[3] = alpha >= 0 ? p[alpha] : 255;
   }
   // Floats in and out, in the buffer's precision: unorm channels read as
@@ -88,7 +104,10 @@ struct ColorBuffer {
   // (a float buffer keeps clear colours outside [0, 1]). Alpha reads 1 where
   // not stored. `mask`: the channels written (null: all).
   void readFloat(int x, int y, float rgba[4]) const;
-  void writeFloat(int x, int y, const float rgba[4], const bool* mask = nullptr) const;
+  // `halfUp`: a clear's rounding, llvmpipe's util_iround (v * max + 0.5,
+  // truncated: 0.3 is 5 of 15 and 19661 of 65535, where rint gives 4 and
+  // 19660; probed).
+  void writeFloat(int x, int y, const float rgba[4], const bool* mask = nullptr, bool halfUp = false) const;
 
  private:
   void writeConverted(int x, int y, const uint8_t rgba[4]) const;
@@ -233,6 +252,25 @@ struct Framebuffer {
   // too (pipeline/draw.cpp, api/gl_framebuffer_api.cpp).
   void selectBuffers(GLenum drawBuffer, GLenum readBuffer);
 };
+
+// A byte as an n-bit (n < 8) unsigned normalized value, as llvmpipe
+// converts its 8-bit blend results: 5 and 6 bits keep the top bits, 4 bits and
+// fewer round to nearest (probed on B4G4R4A4: byte 9 is 1 of 15, byte 15 of
+// B5G5R5A1 1 of 31).
+inline uint8_t byteToUnormBits(uint32_t byte, int bits) {
+  if (bits >= 5) return static_cast<uint8_t>(byte >> (8 - bits));
+  const uint32_t max = (1u << bits) - 1u;
+  return static_cast<uint8_t>((byte * max + 127u) / 255u);
+}
+
+// An n-bit (n < 8) unsigned normalized value as a byte by bit replication,
+// llvmpipe's unpack to 8 bits (5 bits: 28 is 231, where rint(28 * 255 / 31)
+// is 230; probed).
+inline uint8_t unormBitsToByte(uint32_t v, int bits) {
+  uint32_t out = 0;
+  for (int shift = 8 - bits; shift > -bits; shift -= bits) out |= shift >= 0 ? v << shift : v >> -shift;
+  return static_cast<uint8_t>(out);
+}
 
 // Float [0,1] to an n-bit unsigned value as llvmpipe does it: a single-precision
 // multiply, then round to nearest even (REFERENCE.md, "Colour").

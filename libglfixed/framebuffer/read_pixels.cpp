@@ -51,7 +51,7 @@ void clearColor(const ColorBuffer& c, const ColorBufferAttrib& cb, const PixelBo
     const float value[4] = {cb.clearColorUnclamped.r, cb.clearColorUnclamped.g, cb.clearColorUnclamped.b,
                             cb.clearColorUnclamped.a};
     for (int y = std::max(box.y0, 0); y < std::min(box.y1, c.height); ++y)
-      for (int x = std::max(box.x0, 0); x < std::min(box.x1, c.width); ++x) c.writeFloat(x, y, value, mask);
+      for (int x = std::max(box.x0, 0); x < std::min(box.x1, c.width); ++x) c.writeFloat(x, y, value, mask, true);
     return;
   }
   uint8_t value[4];
@@ -372,7 +372,8 @@ GLenum readPixels(const Framebuffer& fb, const PixelStoreAttrib& pack, GLint x, 
           f[i] = f[i] > 0.0f ? (f[i] < 1.0f ? f[i] : 1.0f) : 0.0f;
           rgba[i] = static_cast<uint8_t>(std::nearbyint(f[i] * 255.0f));
         }
-        if (fb.read.channels == ChannelType::kRGB565) fb.read.read(wx, wy, rgba);
+        if (fb.read.channels == ChannelType::kRGB565 || fb.read.channels == ChannelType::kUnormBits)
+          fb.read.read(wx, wy, rgba);
       }
       if (colorTransfer) {  // §3.6.5: scale and bias, then the colour maps
         for (int i = 0; i < 4; ++i) {

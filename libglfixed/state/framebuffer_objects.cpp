@@ -8,15 +8,24 @@ using namespace fbo_enums;
 
 namespace {
 
-RenderbufferFormat colorFormat(int r, int g, int b, int a, bool drawable = false) {
+// `storedAs`: the colour buffer layout it is drawn in (kBGRX: none, not drawable here).
+RenderbufferFormat colorFormat(int r, int g, int b, int a, PixelFormat storedAs = PixelFormat::kBGRX) {
   RenderbufferFormat f;
+  const bool drawable = storedAs != PixelFormat::kBGRX;
   f.kind = RenderbufferFormat::Kind::kColor;
   f.red = r;
   f.green = g;
   f.blue = b;
   f.alpha = a;
-  f.drawable = drawable;
-  f.bytesPerPixel = 4;
+  // Fewer than 8 bits a channel: drawn as kUnormBits, 4 bytes a pixel.
+  // Not 3-3-2: llvmpipe's conversion to 3 bits is none of truncation and
+  // rounding (bytes 21 and 24 are 0 and 1 of 7), so R3_G3_B2 is not drawn here.
+  f.unormBits = !drawable && r > 3 && r < 8 && g < 8 && b < 8 && a < 8;
+  f.drawable = drawable || f.unormBits;
+  f.pixelFormat = drawable ? storedAs : PixelFormat::kRGBA;
+  ColorBuffer c;
+  c.setFormat(f.pixelFormat);
+  f.bytesPerPixel = c.bytesPerPixel;
   return f;
 }
 
@@ -29,22 +38,22 @@ bool renderbufferFormat(GLenum internalFormat, RenderbufferFormat* out) {
   RenderbufferFormat f;
   switch (internalFormat) {
     case GL_RGBA:
-    case GL_RGBA8: f = colorFormat(8, 8, 8, 8, true); break;
+    case GL_RGBA8: f = colorFormat(8, 8, 8, 8, PixelFormat::kRGBA); break;
     case GL_RGB:
-    case GL_RGB8: f = colorFormat(8, 8, 8, 0, true); break;
+    case GL_RGB8: f = colorFormat(8, 8, 8, 0, PixelFormat::kRGBX); break;
     case GL_RGBA2:
     case GL_RGBA4: f = colorFormat(4, 4, 4, 4); break;
     case GL_RGB5_A1: f = colorFormat(5, 5, 5, 1); break;
-    case 0x8D62: f = colorFormat(5, 6, 5, 0); break;  // GL_RGB565
-    case GL_R3_G3_B2:
-    case GL_RGB4:
-    case GL_RGB5: f = colorFormat(5, 6, 5, 0); break;
+    case 0x8D62: f = colorFormat(5, 6, 5, 0, PixelFormat::kRGB565); break;  // GL_RGB565: B5G6R5_UNORM
+    case GL_R3_G3_B2: f = colorFormat(3, 3, 2, 0); break;
+    case GL_RGB4: f = colorFormat(4, 4, 4, 0); break;
+    case GL_RGB5: f = colorFormat(5, 5, 5, 0); break;
     case GL_RGB10: f = colorFormat(10, 10, 10, 0); break;
     case GL_RGB10_A2: f = colorFormat(10, 10, 10, 2); break;
     case GL_RGBA12:
-    case GL_RGBA16: f = colorFormat(16, 16, 16, 16); break;
+    case GL_RGBA16: f = colorFormat(16, 16, 16, 16, PixelFormat::kRGBA16); break;
     case GL_RGB12:
-    case GL_RGB16: f = colorFormat(16, 16, 16, 0); break;
+    case GL_RGB16: f = colorFormat(16, 16, 16, 0, PixelFormat::kRGB16); break;
     case GL_ALPHA:
     case GL_ALPHA4:
     case GL_ALPHA8: f = colorFormat(0, 0, 0, 8); break;
@@ -53,8 +62,10 @@ bool renderbufferFormat(GLenum internalFormat, RenderbufferFormat* out) {
     case 0x8229: f = colorFormat(8, 0, 0, 0); break;  // GL_R8
     case 0x822B: f = colorFormat(8, 8, 0, 0); break;  // GL_RG8
     case 0x8C43:
-    case 0x8C42: f = colorFormat(8, 8, 8, 8); break;      // GL_SRGB8_ALPHA8, GL_SRGB_ALPHA
-    case 0x8814: f = colorFormat(32, 32, 32, 32); break;  // GL_RGBA32F
+    case 0x8C42: f = colorFormat(8, 8, 8, 8, PixelFormat::kRGBA); break;  // GL_SRGB8_ALPHA8, GL_SRGB_ALPHA: drawn linear (no GL_FRAMEBUFFER_SRGB)
+    case 0x8814: f = colorFormat(32, 32, 32, 32, PixelFormat::kRGBA32F); break;  // GL_RGBA32F
+    case 0x8815: f = colorFormat(32, 32, 32, 0, PixelFormat::kRGB32F); break;    // GL_RGB32F
+    case 0x881B: f = colorFormat(16, 16, 16, 0); break;                         // GL_RGB16F
     case 0x881A: f = colorFormat(16, 16, 16, 16); break;  // GL_RGBA16F
     case GL_LUMINANCE:
     case GL_LUMINANCE4:
@@ -112,6 +123,8 @@ bool renderbufferFormat(GLenum internalFormat, RenderbufferFormat* out) {
       break;
     default: return false;
   }
+  f.floatChannels = internalFormat == 0x8814 || internalFormat == 0x8815 || internalFormat == 0x881A ||
+                    internalFormat == 0x881B;
   *out = f;
   return true;
 }
@@ -198,6 +211,84 @@ namespace {
 
 enum class Point { kColor, kDepth, kStencil };
 
+// The colour buffer layout of the texels of an RGBA or RGB texture
+// (texture/texel_format.h: four stored channels): 8-bit ones as OSMesa's
+// RGBA / RGBX bytes (sRGB ones too: written as they are without
+// GL_FRAMEBUFFER_SRGB, probed), 16-bit ones as its 16-bit buffers, fewer
+// bits as kUnormBits. False for the formats not drawn into here (10-bit ones,
+// luminance, intensity and alpha textures).
+bool colorTexelView(texture::TexelFormat f, ColorBuffer* c) {
+  const texture::TexelFormatInfo& info = texture::texelFormatInfo(f);
+  // Alpha, luminance and luminance-alpha textures of 8 and 16 bits: the
+  // fragment's red goes into the luminance (Mesa, probed: an L8 texture
+  // reads back as (L, 0, 0, 1), A8 as (0, 0, 0, A)).
+  const bool wideChannel = info.bytesPerChannel == 2 && info.bits[0] == 16;
+  // Not one channel alone (A8, L8, A16, L16): there llvmpipe's colours differ
+  // from its other formats' by 1 in the last bit on ~12% of the pixels of a
+  // smooth triangle (probed, cause not found), so those are not drawn into here.
+  const bool byteChannel = info.bytesPerChannel == 1 && info.bits[0] == 8 && !info.srgb;
+  if ((wideChannel || byteChannel) && info.channels == 2) {
+    const ChannelType type = wideChannel ? ChannelType::kUnorm16 : ChannelType::kUnorm8;
+    const int bpp = info.bytesPerTexel;
+    switch (info.baseFormat) {
+      case GL_LUMINANCE_ALPHA:
+        c->setChannels(type, bpp, 0, -1, -1, 1);
+        c->luminance = true;
+        return true;
+      default: break;
+    }
+  }
+  if ((info.baseFormat != GL_RGBA && info.baseFormat != GL_RGB) || info.channels != 4) return false;
+  const uint8_t* b = info.bits;
+  const bool alpha = info.baseFormat == GL_RGBA;
+  if (info.bytesPerChannel == 1 && b[0] == 8) {
+    c->setFormat(alpha ? PixelFormat::kRGBA : PixelFormat::kRGBX);
+  } else if (info.bytesPerChannel == 1 && b[0] > 3) {  // not 3-3-2 (renderbufferFormat)
+    c->setUnormBits(b[0], b[1], b[2], alpha ? b[3] : 0);
+  } else if (info.bytesPerChannel == 2 && b[0] == 16) {
+    c->setFormat(PixelFormat::kRGBA16);  // RGBX16: four 16-bit channels, the fourth unused
+    if (!alpha) c->alpha = -1;
+  } else {
+    return false;
+  }
+  return true;
+}
+
+bool colorTexelDrawable(texture::TexelFormat f) {
+  ColorBuffer c;
+  return colorTexelView(f, &c);
+}
+
+// GL 2.1 §3.8.10's mipmap completeness of `t` from its base level to its
+// maximum level (or 1x1), whatever its filters: Mesa makes an attachment of a
+// level past the base level INCOMPLETE_ATTACHMENT unless the texture has that
+// whole chain (probed: a 16x16 texture with levels 0, 1 and 3 defined, or
+// 0 and 1 only, cannot be drawn into at level 1 until GL_TEXTURE_MAX_LEVEL is 1).
+bool mipmapChainComplete(texture::TextureObject& t) {
+  const int base = t.params.baseLevel;
+  if (base < 0 || base >= texture::kMaxTextureLevels) return false;
+  const int faces = t.target == GL_TEXTURE_CUBE_MAP ? 6 : 1;
+  const int dims = t.target == GL_TEXTURE_1D ? 1 : t.target == GL_TEXTURE_3D ? 3 : 2;
+  const texture::TextureImage& b = t.level(0, base);
+  if (!b.defined()) return false;
+  int maxSize = std::max({b.width, dims >= 2 ? b.height : 1, dims >= 3 ? b.depth : 1});
+  int log2 = 0;
+  while ((maxSize >> log2) > 1) ++log2;
+  const int last = std::min({base + log2, t.params.maxLevel, texture::kMaxTextureLevels - 1});
+  for (int level = base; level <= last; ++level) {
+    const int shift = level - base;
+    const int w = std::max(b.width >> shift, 1), h = dims >= 2 ? std::max(b.height >> shift, 1) : 1;
+    const int d = dims >= 3 ? std::max(b.depth >> shift, 1) : 1;
+    for (int f = 0; f < faces; ++f) {
+      const texture::TextureImage& img = t.level(f, level);
+      if (!img.defined() || img.width != w || img.height != h || (dims >= 3 && img.depth != d) ||
+          img.format != b.format)
+        return false;
+    }
+  }
+  return true;
+}
+
 bool isDepthTexel(texture::TexelFormat f) {
   return f == texture::TexelFormat::Z16 || f == texture::TexelFormat::Z24 || f == texture::TexelFormat::Z32;
 }
@@ -210,12 +301,13 @@ GLenum attachmentStatus(const Attachment& a, Point point, FramebufferObjects& ob
     const texture::TextureImage* image = attachedImage(a, textures);
     if (!image || !image->defined()) return kIncompleteAttachment;
     if (a.layer >= image->depth) return kIncompleteAttachment;
+    texture::TextureObject* t = textures.find(a.name);
+    if (t && a.level > t->params.baseLevel && !mipmapChainComplete(*t)) return kIncompleteAttachment;
     const bool depthFormat = isDepthTexel(image->format);
     switch (point) {
       case Point::kColor:
         if (depthFormat) return kIncompleteAttachment;
-        *drawable =
-            image->format == texture::TexelFormat::RGBA8 || image->format == texture::TexelFormat::RGBX8;
+        *drawable = colorTexelDrawable(image->format);
         break;
       case Point::kDepth:
         if (!depthFormat) return kIncompleteAttachment;
@@ -280,12 +372,7 @@ bool colorView(const Attachment& a, FramebufferObjects& objects, texture::Textur
   if (a.type == GL_TEXTURE) {
     texture::TextureImage* image = attachedImage(a, textures);
     if (!image || !image->defined() || a.layer >= image->depth) return false;
-    if (image->format == texture::TexelFormat::RGBA8)
-      c.setFormat(PixelFormat::kRGBA);
-    else if (image->format == texture::TexelFormat::RGBX8)
-      c.setFormat(PixelFormat::kRGBX);
-    else
-      return false;
+    if (!colorTexelView(image->format, &c)) return false;
     c.pixels = image->texels.data() + static_cast<size_t>(a.layer) * image->imageStride;
     c.width = image->width;
     c.height = image->height;
@@ -293,7 +380,11 @@ bool colorView(const Attachment& a, FramebufferObjects& objects, texture::Textur
     Renderbuffer* rb = objects.findRenderbuffer(a.name);
     if (!rb || rb->format.kind != RenderbufferFormat::Kind::kColor || !rb->format.drawable || rb->width < 1)
       return false;
-    c.setFormat(rb->format.alpha > 0 ? PixelFormat::kRGBA : PixelFormat::kRGBX);
+    const RenderbufferFormat& f = rb->format;
+    if (f.unormBits)
+      c.setUnormBits(f.red, f.green, f.blue, f.alpha);
+    else
+      c.setFormat(f.pixelFormat);
     c.pixels = rb->storage.data();
     c.width = rb->width;
     c.height = rb->height;

@@ -41,10 +41,16 @@ struct RenderbufferFormat {
   enum class Kind { kColor, kDepth, kStencil, kDepthStencil };
   Kind kind = Kind::kColor;
   int red = 0, green = 0, blue = 0, alpha = 0, depth = 0, stencil = 0;
-  // This library can draw into it: 8-bit RGBA / RGB colour, 16- or 24-bit
-  // depth, 8-bit stencil. Other formats Mesa accepts make the framebuffer
-  // GL_FRAMEBUFFER_UNSUPPORTED here.
+  // This library can draw into it: 8-bit, 5-6-5, 16-bit and 32-bit float
+  // RGBA / RGB colour (stored as the OSMesa buffers of those types are,
+  // `pixelFormat`), 16- or 24-bit depth, 8-bit stencil. Other formats Mesa
+  // accepts make the framebuffer GL_FRAMEBUFFER_UNSUPPORTED here.
   bool drawable = false;
+  PixelFormat pixelFormat = PixelFormat::kRGBA;
+  bool floatChannels = false;  // GL_RGBA32F, GL_RGBA16F...: component type GL_FLOAT
+  // Channels of fewer than 8 bits (GL_RGBA4, GL_RGB5_A1...): stored as the
+  // textures of those formats are, a byte a channel (ChannelType::kUnormBits).
+  bool unormBits = false;
   int bytesPerPixel = 4;
 };
 // False for an enum glRenderbufferStorage refuses (GL_INVALID_ENUM).

@@ -76,17 +76,27 @@ void drawBits(Context& ctx, raster::RasterState state, long long x, long long y,
               const uint8_t* rows, size_t rowBytes, bool packed, float z, const float color[4],
               bool scissorEnabled, const BitmapShading& shading) {
   std::optional<fragment::TextureStage> stage;
+  std::optional<raster::QuadTexCoords> quadCoords;
   if (shading.textured) {
     buildTextureStage(shading.texture, *ctx.textures, shading.texCoord, stage.emplace());
+    state.texCoordUnits = 0;
     for (int i = 0; i < stage->unitCount; ++i) {
       fragment::TextureStage::Unit& unit = stage->units[i];
-      // A varying the quad does not carry. (Unit 0's would be the bitmap
-      // texture's own coordinates in Mesa: not matched.)
-      if (unit.unit > 0 && (shading.varyingUnits >> unit.unit & 1u))
-        for (float& c : unit.currentCoord) c = 0.0f;
+      if (!(shading.varyingUnits >> unit.unit & 1u)) continue;
+      if (unit.unit == 0) {
+        // Unit 0's varying is the bitmap texture's coordinates: 0 to 1
+        // over Mesa's quad (the 512 x 32 cache, or the bitmap itself).
+        quadCoords.emplace();
+        quadCoords->x = static_cast<float>(x);
+        quadCoords->y = static_cast<float>(y);
+        quadCoords->width = static_cast<float>(width);
+        quadCoords->height = static_cast<float>(height);
+        state.texCoordUnits = 1;
+      } else {
+        for (float& c : unit.currentCoord) c = 0.0f;  // a varying the quad does not carry
+      }
     }
     state.textures = &*stage;
-    state.texCoordUnits = 0;
   }
   const float secondary[4] = {shading.secondary.r, shading.secondary.g, shading.secondary.b, 0.0f};
   if (shading.colorSum) state.varyingCount = 8;
@@ -117,7 +127,8 @@ void drawBits(Context& ctx, raster::RasterState state, long long x, long long y,
           raster::drawPixelRun(state, fb, static_cast<int>(std::max<long long>(x0, state.scissorX0)),
                                static_cast<int>(y + j),
                                static_cast<int>(std::min<long long>(x1, state.scissorX1)),
-                               static_cast<int>(y + j + 1), z, color, secondary);
+                               static_cast<int>(y + j + 1), z, color, secondary,
+                               quadCoords ? &*quadCoords : nullptr);
         i = end;
       }
     }

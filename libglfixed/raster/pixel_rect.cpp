@@ -49,7 +49,7 @@ void drawPixelQuad(const RasterState& state, Framebuffer& fb, const PixelQuad& q
 }
 
 void drawPixelRun(const RasterState& state, Framebuffer& fb, int x0, int y0, int x1, int y1, float z,
-                  const float color[4], const float secondary[4]) {
+                  const float color[4], const float secondary[4], const QuadTexCoords* coords) {
   x0 = std::max(x0, state.scissorX0);
   y0 = std::max(y0, state.scissorY0);
   x1 = std::min(x1, state.scissorX1);
@@ -63,6 +63,13 @@ void drawPixelRun(const RasterState& state, Framebuffer& fb, int x0, int y0, int
   q.z = z;
   for (int k = 0; k < 4; ++k) q.color[k] = color[k];
   for (int k = 0; k < 4; ++k) q.secondary[k] = secondary[k];
+  if (coords) {  // s0, t0 at (x0, y1); s1, t1 at (x1, y0)
+    q.texCoords = true;
+    q.s0 = (q.x0 - coords->x) / coords->width;
+    q.s1 = (q.x1 - coords->x) / coords->width;
+    q.t0 = (q.y1 - coords->y) / coords->height;
+    q.t1 = (q.y0 - coords->y) / coords->height;
+  }
   drawPixelQuad(state, fb, q);
 }
 

@@ -148,6 +148,42 @@ TEST_F(PixelTexturingTest, BitmapIsTexturedAtTheCurrentCoordinates) {
   EXPECT_EQ(At(p, 17, 50), (std::array<int, 4>{0, 0, 255, 255}));  // unit 1 at texel (0, 0): + 0
 }
 
+// Unit 0 with a texture matrix reads a varying: the bitmap's own texture
+// coordinates, 0 to 1 over the 512 x 32 bitmap cache (the bitmap centred
+// vertically in it): at window (x, y) s = (x + 0.5 - x0) / 512, t = (y + 0.5 -
+// y0) / 32, y0 = 5 - 12 for an 8 x 8 bitmap at (3, 5).
+TEST_F(PixelTexturingTest, BitmapUnitZeroVaryingReadsTheCacheCoordinates) {
+  ClearBlack();
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  std::vector<GLubyte> t(32 * 32 * 4);
+  for (int j = 0; j < 32; ++j)
+    for (int i = 0; i < 32; ++i) {
+      GLubyte* q = t.data() + (j * 32 + i) * 4;
+      q[0] = static_cast<GLubyte>(i * 8);
+      q[1] = static_cast<GLubyte>(j * 8);
+      q[2] = 0;
+      q[3] = 255;
+    }
+  GLuint id;
+  glGenTextures(1, &id);
+  glBindTexture(GL_TEXTURE_2D, id);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 32, 32, 0, GL_RGBA, GL_UNSIGNED_BYTE, t.data());
+  glEnable(GL_TEXTURE_2D);
+  glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+  glMatrixMode(GL_TEXTURE);
+  glTranslatef(0.5f, 0, 0);
+  glMatrixMode(GL_MODELVIEW);
+  glWindowPos2i(3, 5);
+  glBitmap(8, 8, 0, 0, 0, 0, kOnes);
+  EXPECT_NO_GL_ERROR();
+  const std::vector<unsigned char> p = ReadAll();
+  EXPECT_EQ(At(p, 3, 5), (std::array<int, 4>{0, 96, 0, 255}));
+  EXPECT_EQ(At(p, 10, 8), (std::array<int, 4>{0, 120, 0, 255}));
+  EXPECT_EQ(At(p, 10, 12), (std::array<int, 4>{0, 152, 0, 255}));
+}
+
 // No fog on pixel rectangles: Mesa's drawpixels and bitmap variants of the
 // fixed-function program have none, whatever the fog coordinate source.
 TEST_F(PixelTexturingTest, PixelRectanglesAreNotFogged) {

@@ -386,6 +386,75 @@ TEST_F(PixelTexturingTest, DisplayListFogCoordinatesAcrossOtherCommands) {
   EXPECT_EQ(current, 7.0f);
 }
 
+// The same after a compiled glDrawArrays with a fog coordinate array, in
+// GL_COMPILE_AND_EXECUTE, and with a glFogCoord outside glBegin/glEnd between
+// other commands.
+TEST_F(PixelTexturingTest, DisplayListFogCoordinatesFromArraysAndCompileAndExecute) {
+  ClearBlack();
+  glEnable(GL_FOG);
+  glFogi(GL_FOG_MODE, GL_LINEAR);
+  glFogf(GL_FOG_START, 0);
+  glFogf(GL_FOG_END, 10);
+  const float blue[4] = {0, 0, 1, 1};
+  glFogfv(GL_FOG_COLOR, blue);
+  glFogi(GL_FOG_COORD_SRC, GL_FOG_COORD);
+  glColor3f(1, 1, 1);
+  auto point = [](float x) { glVertex2f(x, 0); };
+  static const float verts[4] = {-0.9f, 0, -0.8f, 0};
+  static const float coords[2] = {2, 6};
+  glVertexPointer(2, GL_FLOAT, 0, verts);
+  glEnableClientState(GL_VERTEX_ARRAY);
+  glFogCoordPointer(GL_FLOAT, 0, coords);
+  glEnableClientState(GL_FOG_COORD_ARRAY);
+  const GLuint l = glGenLists(3);
+  glNewList(l, GL_COMPILE);
+  glDrawArrays(GL_POINTS, 0, 2);
+  glDisable(GL_DEPTH_TEST);
+  glBegin(GL_POINTS);
+  point(-0.5f);
+  glEnd();
+  glEndList();
+  glDisableClientState(GL_FOG_COORD_ARRAY);
+  glDisableClientState(GL_VERTEX_ARRAY);
+  glFogCoordf(9.5f);
+  glNewList(l + 1, GL_COMPILE_AND_EXECUTE);
+  glBegin(GL_POINTS);
+  glFogCoordf(8);
+  point(0.0f);
+  glEnd();
+  glEnable(GL_FOG);
+  glBegin(GL_POINTS);
+  point(0.1f);
+  glEnd();
+  glEndList();
+  glNewList(l + 2, GL_COMPILE);
+  glBegin(GL_POINTS);
+  glFogCoordf(3);
+  point(0.3f);
+  glEnd();
+  glPointSize(1);
+  glFogCoordf(1);
+  glPushMatrix();
+  glPopMatrix();
+  glBegin(GL_POINTS);
+  point(0.4f);
+  glEnd();
+  glEndList();
+  ClearBlack();
+  for (GLuint i = 0; i < 3; ++i) {
+    glFogCoordf(9.5f);
+    glCallList(l + i);
+  }
+  EXPECT_NO_GL_ERROR();
+  const std::vector<unsigned char> p = ReadAll();
+  const int xs[7] = {3, 6, 16, 32, 35, 41, 44};
+  const int red[7] = {204, 102, 13, 51, 51, 178, 230};
+  for (int i = 0; i < 7; ++i) EXPECT_EQ(At(p, xs[i], 32)[0], red[i]) << "point " << i;
+  float current = 0;
+  glGetFloatv(GL_CURRENT_FOG_COORD, &current);
+  EXPECT_EQ(current, 1.0f);
+}
+
 // Per-vertex secondary colours (glSecondaryColor between glBegin and glEnd)
 // are varyings of the unlit colour sum, clamped at the vertex: 3 on the left
 // edge and 0 on the right read about 0.47 at x = 8 of 16, not 1.

@@ -477,5 +477,43 @@ TEST_F(PixelTexturingTest, PerVertexSecondaryColoursAreInterpolated) {
   EXPECT_EQ(At(p, 0, 40), (std::array<int, 4>{247, 0, 0, 255}));
 }
 
+// The same from a display list, whose vertex node keeps them per vertex; the
+// last one becomes current at replay, and a glSecondaryColor compiled
+// outside glBegin/glEnd holds for the quad after it.
+TEST_F(PixelTexturingTest, DisplayListKeepsPerVertexSecondaryColours) {
+  ClearBlack();
+  glEnable(GL_COLOR_SUM);
+  glColor4f(0, 0, 0, 1);
+  const GLuint l = glGenLists(1);
+  glNewList(l, GL_COMPILE);
+  glBegin(GL_QUADS);
+  glSecondaryColor3f(3, 0, 0);
+  glVertex2f(-1, 0);
+  glSecondaryColor3f(0, 0, 0);
+  glVertex2f(-0.5f, 0);
+  glVertex2f(-0.5f, 0.5f);
+  glSecondaryColor3f(3, 0, 0);
+  glVertex2f(-1, 0.5f);
+  glEnd();
+  glSecondaryColor3f(0, 0.5f, 0);
+  glBegin(GL_QUADS);
+  glVertex2f(0, 0);
+  glVertex2f(0.5f, 0);
+  glVertex2f(0.5f, 0.5f);
+  glVertex2f(0, 0.5f);
+  glEnd();
+  glEndList();
+  glSecondaryColor3f(0, 0, 0.25f);
+  glCallList(l);
+  EXPECT_NO_GL_ERROR();
+  const std::vector<unsigned char> p = ReadAll();
+  EXPECT_EQ(At(p, 8, 40), (std::array<int, 4>{120, 0, 0, 255}));
+  EXPECT_EQ(At(p, 40, 40), (std::array<int, 4>{0, 128, 0, 255}));
+  float c[4] = {};
+  glGetFloatv(GL_CURRENT_SECONDARY_COLOR, c);
+  EXPECT_EQ(c[1], 0.5f);
+  EXPECT_EQ(c[2], 0.0f);
+}
+
 }  // namespace
 }  // namespace glfx_test

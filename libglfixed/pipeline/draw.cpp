@@ -255,6 +255,7 @@ void drawBatch(Context& ctx, const VertexBatch& batch, primitive::PrimitiveState
   if (ctx.objectBound() && batch.size() != 0 && !drawFramebufferComplete(ctx)) return;
   if (!ctx.framebuffer.bound() || batch.size() == 0) return;
   ctx.lastDrawTexCoordUnits = batch.texCoordUnits;
+  ctx.lastDrawSecondaryColorVaries = secondaryIsVertexData;
   const vertex::VertexState& vs = ctx.validate();
   static thread_local ShadedVertices shaded;  // reused: no allocation per batch
   vertex::shadeBatch(vs, batch, shaded);

@@ -66,7 +66,9 @@ BitmapShading bitmapShading(const Context& ctx) {
   // texenv_doing_secondary_color; under lighting the program reads the
   // varying, which the bitmap's vertices do not carry (0).
   b.colorSum = ctx.fog.colorSum;
-  if (b.colorSum && !ctx.lighting.lighting) b.secondary = clampedCurrentSecondaryColor(ctx);
+  // So it is after a draw with per-vertex secondary colours.
+  if (b.colorSum && !ctx.lighting.lighting && !ctx.lastDrawSecondaryColorVaries)
+    b.secondary = clampedCurrentSecondaryColor(ctx);
   return b;
 }
 

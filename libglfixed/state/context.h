@@ -171,6 +171,7 @@ class Context {
   // (Mesa's VertexProgram._VaryingInputs, which glBitmap's fragment program
   // reads: state/bitmap_cache.h, BitmapShading).
   uint32_t lastDrawTexCoordUnits = 0;
+  bool lastDrawSecondaryColorVaries = false;  // and whether it carried secondary colours
   // Lines (primitive/lines.cpp): the draw module's stipple counter, which Mesa
   // keeps from draw to draw (draw_pipe_stipple.c), and whether the next batch
   // continues the previous one's strip (a long array draw drawn in chunks,

@@ -253,6 +253,27 @@ TEST_F(PixelTexturingTest, BitmapColourSumAddsTheCurrentSecondaryColour) {
   EXPECT_EQ(At(p, 50, 17), (std::array<int, 4>{lit, lit, lit, 255}));
 }
 
+// After a draw with per-vertex secondary colours (colour sum off during it),
+// Mesa's program reads the bitmap's secondary colour as a varying: 0.
+TEST_F(PixelTexturingTest, BitmapColourSumAfterPerVertexSecondaryColours) {
+  ClearBlack();
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glBegin(GL_TRIANGLES);
+  glSecondaryColor3f(0.1f, 0.2f, 0.3f);
+  glVertex2f(-1, -1);
+  glVertex2f(-0.9f, -1);
+  glVertex2f(-1, -0.9f);
+  glEnd();
+  glEnable(GL_COLOR_SUM);
+  glColor3f(0.5f, 0.5f, 0.5f);
+  glSecondaryColor3f(0.2f, 0.0f, 0.0f);
+  glRasterPos2f(0.5f, 0.5f);
+  glBitmap(8, 8, 0, 0, 0, 0, kOnes);
+  EXPECT_NO_GL_ERROR();
+  const std::vector<unsigned char> p = ReadAll();
+  EXPECT_EQ(At(p, 50, 50), (std::array<int, 4>{128, 128, 128, 255}));
+}
+
 // glCopyPixels drawn as a quad (blending on) is textured; the blit Mesa uses
 // without fragment operations is not.
 TEST_F(PixelTexturingTest, CopyPixelsQuadIsTexturedTheBlitIsNot) {

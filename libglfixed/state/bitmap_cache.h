@@ -25,9 +25,11 @@ namespace glfixed {
 // that the fixed-function vertex stage would not vary as a constant): the
 // enabled units' texturing with the current texture coordinates, untransformed,
 // and with GL_COLOR_SUM unlit the current secondary colour clamped. A unit
-// whose coordinates would vary (texgen, a texture matrix, point sprites) and
-// the secondary colour under lighting read varyings the bitmap's vertices do
-// not carry: (0, 0, 0, 0). No fog (the variant has none: MESA_FACTS.md).
+// whose coordinates would vary (texgen, a texture matrix, point sprites, the
+// last draw's per-vertex coordinates) reads a varying: unit 0's is the
+// bitmap quad's own texture coordinates, the others' and the secondary
+// colour's (under lighting, or after per-vertex secondary colours) are
+// absent: (0, 0, 0, 0). No fog (the variant has none: MESA_FACTS.md).
 struct BitmapShading {
   bool textured = false;
   TextureAttrib texture;

@@ -34,9 +34,15 @@ void texCoord(GLenum unit, float s, float t, float r, float q) {
 }
 
 void secondaryColor(float r, float g, float b) {
-  if (api::compiledAttribute(&glSecondaryColor3f, r, g, b)) return;
   Context* ctx = currentContext();
-  if (ctx) ctx->current.secondaryColor = glm::vec4(r, g, b, 1.0f);
+  if (ctx && ctx->displayLists.compiler &&
+      api::compiledVertexData([&](pipeline::ListCompiler& l) { l.secondaryColor(glm::vec4(r, g, b, 1.0f)); },
+                              &glSecondaryColor3f, r, g, b))
+    return;
+  if (!ctx) return;
+  // A vbo attribute of Mesa's like glFogCoord: it grows the vertex format.
+  if (ctx->insideBeginEnd || ctx->vbo.verticesBuffered) pipeline::secondaryColorBecomesVertexData(*ctx);
+  ctx->current.secondaryColor = glm::vec4(r, g, b, 1.0f);
 }
 
 // Fog: a vertex attribute of Mesa's vbo (it grows the vertex format like

@@ -121,7 +121,11 @@ void rasterPos(float x, float y, float z, float w) {
     rp.position[i] = scaled + translate[i];
   }
   rp.position[3] = clip.w;
-  rp.distance = std::sqrt(eye.x * eye.x + eye.y * eye.y + eye.z * eye.z);
+  // GL_CURRENT_RASTER_DISTANCE (§2.13, EXT_fog_coord): the current fog
+  // coordinate as it is (no fabs) when it is the fog source, else the eye
+  // distance (rastpos.c; fog enabled or not).
+  rp.distance = ctx->fog.coordSrc == GL_FOG_COORD ? ctx->current.fogCoord
+                                                 : std::sqrt(eye.x * eye.x + eye.y * eye.y + eye.z * eye.z);
   const vertex::VertexState& vs = ctx->validate();
   rasterTexCoords(*ctx, vs, object, eye, rp);  // texture coordinates (issue 14)
   if (vs.lighting) {
@@ -136,6 +140,7 @@ void rasterPos(float x, float y, float z, float w) {
     vertex::shadeBatch(vs, batch, shaded);
     rp.color = shaded.primary[kFront][0];
     rp.secondaryColor = shaded.hasSecondary ? shaded.secondary[kFront][0] : glm::vec4(0, 0, 0, 1);
+    rp.secondaryColor.a = 1.0f;  // rastpos.c: the specular colour's alpha is 1
   } else {
     rp.color = ctx->current.color;
     rp.secondaryColor = ctx->current.secondaryColor;
@@ -492,7 +497,8 @@ void windowPos(float x, float y, float z) {
   const float n = static_cast<float>(api::clamp01(ctx->viewport.depthNear)),
               f = static_cast<float>(api::clamp01(ctx->viewport.depthFar));
   rp.position = glm::vec4(x, y, clamp01f(z) * (f - n) + n, 1.0f);
-  rp.distance = 0.0f;
+  // ARB_window_pos: the current fog coordinate when it is the fog source, else 0.
+  rp.distance = ctx->fog.coordSrc == GL_FOG_COORD ? ctx->current.fogCoord : 0.0f;
   for (int k = 0; k < 4; ++k) {
     rp.color[k] = clamp01f(ctx->current.color[k]);
     rp.secondaryColor[k] = clamp01f(ctx->current.secondaryColor[k]);

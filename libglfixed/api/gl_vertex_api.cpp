@@ -35,6 +35,7 @@ void addVertex(int size, float x, float y, float z, float w) {
   for (uint32_t m = b.texCoordUnits; m != 0; m &= m - 1)  // texture coordinates (issue 14)
     b.texCoord[__builtin_ctz(m)].push_back(ctx->current.texCoord[__builtin_ctz(m)]);
   if (b.hasFogCoord) b.fogCoord.push_back(ctx->current.fogCoord);  // fog
+  if (b.hasSecondaryColor) b.secondaryColor.push_back(ctx->current.secondaryColor);  // the colour sum
   pipeline::vertexAdded(*ctx);
 }
 

@@ -134,7 +134,7 @@ ShadeTarget makeShadeTarget(const raster::RasterState& state, Framebuffer& fb,
   }
   s.secondary = t.varyingCount == 8;
   s.stipple = t.stipple ? t.stipple : (state.stippleEveryPrimitive ? state.polygonStipple : nullptr);
-  s.textures = state.textures && state.textures->unitCount > 0 ? state.textures : nullptr;
+  s.textures = state.textures && (state.textures->unitCount > 0 || state.textures->hasImage) ? state.textures : nullptr;
   s.blend = state.blend;
   s.fog = t.fog ? state.fog : FogState();  // only where the vertices carried the fog distance
   s.alphaTest = state.alphaTest;

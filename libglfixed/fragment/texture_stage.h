@@ -20,9 +20,18 @@ struct TextureStage {
     // (ff_fragment_shader.cpp, filter_fp_input_mask: a coordinate varies only
     // with texgen, a texture matrix, or per-vertex data).
     float currentCoord[4] = {0, 0, 0, 1};
+    // currentCoord at every fragment even where the vertices carry unit
+    // coordinates (a pixel rectangle's: pipeline/pixel_rect.cpp).
+    bool constantCoord = false;
   };
   int unitCount = 0;
   Unit units[kMaxTextureEnvUnits];
+  // glDrawPixels and glCopyPixels: the image, sampled at unit 0's
+  // interpolated coordinates, through `image.env` (GL_REPLACE) before the
+  // units: its texel is the fragment's primary colour, as Mesa's
+  // nir_lower_drawpixels puts the sample in place of gl_Color.
+  bool hasImage = false;
+  Unit image;
 };
 
 }  // namespace glfixed::fragment

@@ -80,7 +80,8 @@ void drawSegments(Context& ctx, const ArraySources& src, GLenum mode,
     } else {
       appendPositions(src, ctx, elementAt, seg.start, seg.start + seg.count, batch);
     }
-    drawBatch(ctx, batch, seg.hubReplaced ? Submission::kDrawElements : submission, src.color);
+    drawBatch(ctx, batch, seg.hubReplaced ? Submission::kDrawElements : submission, src.color, false,
+              src.secondaryColor);
   }
 }
 
@@ -106,7 +107,7 @@ void drawPointsOrLines(Context& ctx, const ArraySources& src, GLenum mode, uint3
     // Lines: a strip's later chunks carry on its stipple pattern (Mesa's
     // vsplit flags them DRAW_SPLIT_BEFORE).
     ctx.lineStipple.continues = strip && start != 0;
-    drawBatch(ctx, batch, submission, src.color);
+    drawBatch(ctx, batch, submission, src.color, false, src.secondaryColor);
     ctx.lineStipple.continues = false;
     if (last) return;
     start = strip ? end - 1 : end;
@@ -185,7 +186,7 @@ void drawArrays(Context& ctx, const ArraySources& src, GLenum mode, uint32_t fir
     const uint32_t end = segments[last].start + segments[last].count;
     batch.reset(mode, ctx.lighting.material);
     appendRange(src, ctx, first + start, end - start, batch);
-    drawBatch(ctx, batch, Submission::kDrawArrays, src.color);
+    drawBatch(ctx, batch, Submission::kDrawArrays, src.color, false, src.secondaryColor);
   }
 }
 
@@ -205,7 +206,7 @@ void drawElements(Context& ctx, const ArraySources& src, GLenum mode, const Inde
     appendPositions(src, ctx, elementAt, 0, count, batch);
     range.reset(mode, ctx.lighting.material);
     appendRange(src, ctx, bounds.min, bounds.max - bounds.min + 1, range);
-    drawBatch(ctx, batch, Submission::kDrawElements, src.color, anyVertexOutside(ctx, range));
+    drawBatch(ctx, batch, Submission::kDrawElements, src.color, anyVertexOutside(ctx, range), src.secondaryColor);
     return;
   }
   // Otherwise segments of at most 1024 indices, each fetching only the

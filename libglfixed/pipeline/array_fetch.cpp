@@ -88,6 +88,7 @@ void appendEach(const ArraySources& src, const Context& ctx, size_t count, Verte
   const size_t start = batch.size();
   if (start == 0) batch.setTexCoordUnits(vertex::texCoordInputUnits(ctx));  // texture coordinates (issue 14)
   if (start == 0) batch.setHasFogCoord(vertex::fogCoordInput(ctx));         // fog
+  if (start == 0) batch.setHasSecondaryColor(!ctx.lighting.lighting && ctx.fog.colorSum);  // the colour sum
   batch.resizeVertices(start + count);
   const glm::vec4 currentNormal(ctx.current.normal, 0.0f);
   const glm::vec4& currentColor = ctx.current.color;
@@ -110,6 +111,9 @@ void appendEach(const ArraySources& src, const Context& ctx, size_t count, Verte
     // Fog: the fog coordinate array, else the current fog coordinate.
     if (batch.hasFogCoord)
       batch.fogCoord[o] = src.fogCoord ? src.fogCoordView.read(i, glm::vec4(0)).x : ctx.current.fogCoord;
+    if (batch.hasSecondaryColor)
+      batch.secondaryColor[o] =
+          src.secondaryColor ? src.secondaryColorView.read(i, glm::vec4(0, 0, 0, 1)) : ctx.current.secondaryColor;
   }
 }
 

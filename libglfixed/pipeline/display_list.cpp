@@ -151,6 +151,7 @@ void ListCompiler::vertex(const glm::vec4& position) {
   v.edgeFlag.push_back(edgeFlag_);  // polygon area
   for (uint32_t m = v.texCoordUnits; m != 0; m &= m - 1) v.texCoord[__builtin_ctz(m)].push_back(texCoord_[__builtin_ctz(m)]);
   if (v.hasFogCoord) v.fogCoord.push_back(fogCoord_);
+  if (v.hasSecondaryColor) v.secondaryColor.push_back(secondaryColor_);
 }
 
 // Polygon area: the edge flag joins the node's vertices without growing its
@@ -187,6 +188,14 @@ void ListCompiler::fogCoord(float f) {
     node_->vertices.setHasFogCoord(true);
   }
   fogCoord_ = f;
+}
+
+void ListCompiler::secondaryColor(const glm::vec4& c) {
+  if (!node_->vertices.hasSecondaryColor) {
+    growFormat();
+    node_->vertices.setHasSecondaryColor(true);
+  }
+  secondaryColor_ = c;
 }
 
 void ListCompiler::material(GLenum face, GLenum pname, const GLfloat* params, int count) {
@@ -232,6 +241,7 @@ void ListCompiler::growFormat(bool feedOpenPrimitive) {
   }
   // The fog coordinate stays in the format of the nodes that follow.
   if (old.vertices.hasFogCoord && !next->vertices.hasFogCoord) next->vertices.setHasFogCoord(true);
+  if (old.vertices.hasSecondaryColor && !next->vertices.hasSecondaryColor) next->vertices.setHasSecondaryColor(true);
   if (insideBeginEnd_ && feedOpenPrimitive) {
     const ListPrimitive open = old.primitives.back();
     old.primitives.pop_back();
@@ -414,6 +424,7 @@ void loopBackVertexNode(const VertexNode& node) {
         glMultiTexCoord4fv(GL_TEXTURE0 + u, &v.texCoord[u][i][0]);
       }
       if (v.hasFogCoord) glFogCoordf(v.fogCoord[i]);
+      if (v.hasSecondaryColor) glSecondaryColor3fv(&v.secondaryColor[i][0]);
       glVertex4fv(&v.position[i][0]);
     }
     materialsUpTo(p.first + p.count);
@@ -441,7 +452,8 @@ void replayVertexNode(Context& ctx, VertexNode& node) {
         std::fill(b.normal.begin(), b.normal.end(), ctx.current.normal);
       b.materials[0] = ctx.lighting.material;
       if (!node.hasEdgeFlag) std::fill(b.edgeFlag.begin(), b.edgeFlag.end(), ctx.current.edgeFlag);
-      drawBatch(ctx, b, primitive::PrimitiveState::Submission::kDisplayList, node.hasColor);
+      drawBatch(ctx, b, primitive::PrimitiveState::Submission::kDisplayList, node.hasColor, false,
+                node.vertices.hasSecondaryColor);
     }
     ctx.vbo = Context::VboFormat();
     // The last vertex's attributes become current (Mesa's current_data).
@@ -450,6 +462,7 @@ void replayVertexNode(Context& ctx, VertexNode& node) {
       for (uint32_t m = v.texCoordUnits; m != 0; m &= m - 1)
         ctx.current.texCoord[__builtin_ctz(m)] = v.texCoord[__builtin_ctz(m)].back();
       if (v.hasFogCoord) ctx.current.fogCoord = v.fogCoord.back();
+      if (v.hasSecondaryColor) ctx.current.secondaryColor = v.secondaryColor.back();
       if (node.hasNormal) ctx.current.normal = v.normal.back();
       if (node.hasEdgeFlag) ctx.current.edgeFlag = v.edgeFlag.back() != 0;
       if (node.hasColor) {

@@ -121,6 +121,8 @@ class ListCompiler {
   void texCoord(int unit, const glm::vec4& c);
   // The fog coordinate: joins the node's vertex format the same way.
   void fogCoord(float f);
+  // The secondary colour (the colour sum): joins the format the same way.
+  void secondaryColor(const glm::vec4& c);
   void material(GLenum face, GLenum pname, const GLfloat* params, int count);
   void attributeCall(ListCommand call) { node_->attributeCalls.push_back(std::move(call)); }
   // glCallList between glBegin and glEnd in a list: the node ends and the rest
@@ -156,6 +158,7 @@ class ListCompiler {
   glm::vec3 normal_{0, 0, 1};
   glm::vec4 texCoord_[kBatchTexCoordUnits];
   float fogCoord_ = 0;
+  glm::vec4 secondaryColor_{0, 0, 0, 1};
   // The nodes a format growth ended inside the glBegin/glEnd that goes on in
   // node_: if a node of the chain is fed back on replay, they all must be.
   std::vector<std::shared_ptr<VertexNode>> grownChain_;

@@ -10,6 +10,7 @@
 #include "primitive/select_feedback.h"
 #include "state/context.h"
 #include "state/framebuffer_binding.h"
+#include "vertex/lighting_math.h"
 #include "vertex/lighting_matrix.h"
 #include "vertex/vertex_stage.h"
 
@@ -37,7 +38,10 @@ primitive::UserClipPlanes userClipPlanes(const Context& ctx) {
 // whose texture is complete; a unit with none does not texture. (Mesa goes on
 // to a lower enabled target when a higher one is incomplete, where GL 2.1
 // disables the unit: texstate.c, update_ff_texture_state.)
-void buildTextureStage(const Context& ctx, fragment::TextureStage& stage) {
+}  // namespace
+
+void buildTextureStage(const TextureAttrib& texture, const texture::TextureObjects& objects,
+                       const glm::vec4 (&current)[kMaxTextureUnits], fragment::TextureStage& stage) {
   struct Target {
     bool TextureUnitEnables::*enabled;
     GLenum target;
@@ -49,22 +53,30 @@ void buildTextureStage(const Context& ctx, fragment::TextureStage& stage) {
   stage.unitCount = 0;
   for (int u = 0; u < kMaxTextureUnits; ++u) {
     for (const Target& target : kPriority) {
-      if (!(ctx.texture.enables[u].*target.enabled)) continue;
+      if (!(texture.enables[u].*target.enabled)) continue;
       const texture::TextureObject& object =
-          texture::boundObject(*ctx.textures, ctx.texture.binding[u], texture::targetIndex(target.target));
+          texture::boundObject(objects, texture.binding[u], texture::targetIndex(target.target));
       fragment::TextureStage::Unit& unit = stage.units[stage.unitCount];
-      if (!texture::makeSamplerView(object, target.target, ctx.texture.env[u].lodBias, unit.view)) continue;
+      if (!texture::makeSamplerView(object, target.target, texture.env[u].lodBias, unit.view)) continue;
       unit.unit = u;
-      unit.env.env = ctx.texture.env[u];
+      unit.env.env = texture.env[u];
       const texture::TextureImage& base = object.level(0, unit.view.firstLevel);
       unit.env.baseFormat = texture::texelFormatInfo(base.format).baseFormat;
       unit.env.depthTextureMode = object.params.depthTextureMode;
-      for (int j = 0; j < 4; ++j) unit.currentCoord[j] = ctx.current.texCoord[u][j];
+      for (int j = 0; j < 4; ++j) unit.currentCoord[j] = current[u][j];
       ++stage.unitCount;
       break;
     }
   }
 }
+
+bool anyTextureEnabled(const TextureAttrib& texture) {
+  for (const TextureUnitEnables& e : texture.enables)
+    if (e.texture1D || e.texture2D || e.texture3D || e.textureCubeMap) return true;
+  return false;
+}
+
+namespace {
 
 primitive::PrimitiveState primitiveState(const Context& ctx, GLenum mode, bool separateSpecular) {
   primitive::PrimitiveState s;
@@ -192,6 +204,18 @@ primitive::PrimitiveState primitiveState(const Context& ctx, GLenum mode, bool s
 
 }  // namespace
 
+glm::vec4 clampedCurrentSecondaryColor(const Context& ctx) {
+  glm::vec4 c = ctx.current.secondaryColor;
+  for (int k = 0; k < 3; ++k) c[k] = c[k] > 1.0f ? 1.0f : (c[k] < 0.0f ? 0.0f : c[k]);  // SATURATE: NaN stays
+  c[3] = 0.0f;  // the sum adds rgb only
+  return c;
+}
+
+void addCurrentSecondaryColor(const Context& ctx, ShadedVertices& shaded) {
+  shaded.hasSecondary = true;
+  shaded.secondary[kFront].assign(shaded.size(), clampedCurrentSecondaryColor(ctx));
+}
+
 raster::RasterState pixelRectRasterState(const Context& ctx) {
   raster::RasterState r = primitiveState(ctx, GL_TRIANGLES, false).raster;
   // The state tracker's bitmap and drawpixels rasterizer state: the whole
@@ -215,27 +239,47 @@ raster::RasterState pixelRectRasterState(const Context& ctx) {
   r.texCoordUnits = 0;
   r.varyingCount = 4;
   r.pointSprite = false;
-  r.fog = fragment::FogState();  // (Mesa fogs bitmaps too: not done)
+  r.fog = fragment::FogState();  // Mesa's pixel rectangles are not fogged (MESA_FACTS.md)
   return r;
 }
 
 void drawBatch(Context& ctx, const VertexBatch& batch) {
-  drawBatch(ctx, batch, primitive::PrimitiveState::Submission::kBeginEnd, ctx.vbo.colorIsVertexData());
+  drawBatch(ctx, batch, primitive::PrimitiveState::Submission::kBeginEnd, ctx.vbo.colorIsVertexData(), false,
+            ctx.vbo.secondaryColorIsVertexData);
 }
 
 void drawBatch(Context& ctx, const VertexBatch& batch, primitive::PrimitiveState::Submission submission,
-               bool colorIsVertexData, bool fetchedVertexOutside) {
+               bool colorIsVertexData, bool fetchedVertexOutside, bool secondaryIsVertexData) {
   flushBitmapCache(ctx);  // Mesa's st_prepare_draw
   // A framebuffer object: its attachments as they are now; an incomplete one
   // draws nothing (GL 3.0 §4.4.4).
   if (ctx.objectBound() && batch.size() != 0 && !drawFramebufferComplete(ctx)) return;
   if (!ctx.framebuffer.bound() || batch.size() == 0) return;
+  ctx.lastDrawTexCoordUnits = batch.texCoordUnits;
+  ctx.lastDrawSecondaryColorVaries = secondaryIsVertexData;
   const vertex::VertexState& vs = ctx.validate();
   static thread_local ShadedVertices shaded;  // reused: no allocation per batch
   vertex::shadeBatch(vs, batch, shaded);
+  const bool unlitColorSum = !vs.lighting && ctx.fog.colorSum;
+  // Per-vertex secondary colours (glSecondaryColor as vertex data, or an
+  // array) are varyings, clamped at the vertex; else the current one is a
+  // constant.
+  const bool secondaryVaries =
+      unlitColorSum && secondaryIsVertexData && batch.hasSecondaryColor && batch.secondaryColor.size() == batch.size();
+  if (secondaryVaries) {
+    shaded.hasSecondary = true;
+    shaded.secondary[kFront].resize(batch.size());
+    for (size_t i = 0; i < batch.size(); ++i) {
+      const glm::vec4 c = vertex::lp::clampColor(batch.secondaryColor[i]);
+      shaded.secondary[kFront][i] = glm::vec4(c.r, c.g, c.b, 0.0f);
+    }
+  } else if (unlitColorSum) {
+    addCurrentSecondaryColor(ctx, shaded);
+  }
   primitive::PrimitiveState ps = primitiveState(ctx, batch.mode, shaded.hasSecondary);
   ps.submission = submission;
   ps.constantPrimary = !vs.lighting && !colorIsVertexData;
+  ps.constantSecondary = unlitColorSum && !secondaryVaries;
   ps.fetchedVertexOutside = fetchedVertexOutside;
   ps.lineStippleCounter = &ctx.lineStipple.counter;  // lines: Mesa keeps it from draw to draw
   // Polygon area: the batch's edge flags (GL 2.1 §2.6.2), when it has them.
@@ -248,12 +292,10 @@ void drawBatch(Context& ctx, const VertexBatch& batch, primitive::PrimitiveState
                                          ctx.renderMode.feedback);
   // Built only when a unit enables a target: the stage is large.
   std::optional<fragment::TextureStage> textures;
-  for (const TextureUnitEnables& e : ctx.texture.enables)
-    if (e.texture1D || e.texture2D || e.texture3D || e.textureCubeMap) {
-      buildTextureStage(ctx, textures.emplace());
-      ps.raster.textures = &*textures;
-      break;
-    }
+  if (anyTextureEnabled(ctx.texture)) {
+    buildTextureStage(ctx.texture, *ctx.textures, ctx.current.texCoord, textures.emplace());
+    ps.raster.textures = &*textures;
+  }
   Framebuffer& fb = ctx.framebuffer;
   if (fb.moreColorCount > 0) {
     // glDrawBuffers: the same primitives into each draw buffer, from the

@@ -133,6 +133,7 @@ void beginPrimitive(Context& ctx, GLenum mode) {
   ctx.batch.reset(mode, ctx.lighting.material);
   ctx.batch.setTexCoordUnits(vertex::texCoordInputUnits(ctx));  // texture coordinates (issue 14)
   ctx.batch.setHasFogCoord(vertex::fogCoordInput(ctx));         // fog
+  ctx.batch.setHasSecondaryColor(!ctx.lighting.lighting && ctx.fog.colorSum);  // the colour sum
   ++ctx.vboStore.primCount;
   ctx.vboStore.openLoopWrapped = false;
 }
@@ -225,6 +226,10 @@ void edgeFlagBecomesVertexData(Context& ctx) {
 void fogCoordBecomesVertexData(Context& ctx) {
   if (ctx.vbo.fogCoordIsVertexData) return;
   growVertexFormat(ctx, true, [](Context::VboFormat& f) { f.fogCoordIsVertexData = true; });
+}
+void secondaryColorBecomesVertexData(Context& ctx) {
+  if (ctx.vbo.secondaryColorIsVertexData) return;
+  growVertexFormat(ctx, true, [](Context::VboFormat& f) { f.secondaryColorIsVertexData = true; });
 }
 void positionGrows(Context& ctx, int size) {
   if (ctx.vbo.positionSize >= size) return;

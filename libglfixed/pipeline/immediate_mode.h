@@ -41,6 +41,7 @@ void normalBecomesVertexData(Context& ctx);
 void edgeFlagBecomesVertexData(Context& ctx);
 // And for glFogCoord (Mesa's VBO_ATTRIB_FOG).
 void fogCoordBecomesVertexData(Context& ctx);
+void secondaryColorBecomesVertexData(Context& ctx);
 // And for the position: a glVertex3 after glVertex2 calls grows it.
 void positionGrows(Context& ctx, int size);
 // And for glMaterial: `attributes` are the material components the call sets

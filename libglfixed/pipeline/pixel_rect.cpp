@@ -5,6 +5,7 @@
 #include <cstring>
 #include <memory>
 #include <new>
+#include <optional>
 #include <vector>
 
 #include "fragment/texture_stage.h"
@@ -42,11 +43,66 @@ int floorToInt(float v) {
   return static_cast<int>(std::floor(v));
 }
 
+bool isIdentity(const glm::mat4& m) { return m == glm::mat4(1.0f); }
+
+// The shading a glBitmap call validates (BitmapShading): Mesa's
+// filter_fp_input_mask says which inputs the fixed-function program reads as
+// constants (a unit varies with texgen, a texture matrix, point sprites, or
+// coordinates per vertex in the last draw).
+BitmapShading bitmapShading(const Context& ctx) {
+  BitmapShading b;
+  b.textured = anyTextureEnabled(ctx.texture);
+  if (b.textured) {
+    b.texture = ctx.texture;
+    for (int u = 0; u < kMaxTextureUnits; ++u) {
+      b.texCoord[u] = ctx.current.texCoord[u];
+      const TextureUnitEnables& e = ctx.texture.enables[u];
+      const bool enabled = e.texture1D || e.texture2D || e.texture3D || e.textureCubeMap;
+      const bool texgen = e.genS || e.genT || e.genR || e.genQ;
+      if (ctx.point.sprite || (ctx.lastDrawTexCoordUnits >> u & 1u) ||
+          (enabled && (texgen || !isIdentity(ctx.textureMatrix[u].top()))))
+        b.varyingUnits |= 1u << u;
+    }
+  }
+  // texenv_doing_secondary_color; under lighting the program reads the
+  // varying, which the bitmap's vertices do not carry (0).
+  b.colorSum = ctx.fog.colorSum;
+  // So it is after a draw with per-vertex secondary colours.
+  if (b.colorSum && !ctx.lighting.lighting && !ctx.lastDrawSecondaryColorVaries)
+    b.secondary = clampedCurrentSecondaryColor(ctx);
+  return b;
+}
+
 // Draws rows of `on` bytes (1: a fragment) or bits (`packed`), `width` wide,
-// at window (x, y), as runs of pixels cut to the region.
+// at window (x, y), as runs of pixels cut to the region, shaded as `shading` says.
 void drawBits(Context& ctx, raster::RasterState state, long long x, long long y, int width, int height,
               const uint8_t* rows, size_t rowBytes, bool packed, float z, const float color[4],
-              bool scissorEnabled) {
+              bool scissorEnabled, const BitmapShading& shading) {
+  std::optional<fragment::TextureStage> stage;
+  std::optional<raster::QuadTexCoords> quadCoords;
+  if (shading.textured) {
+    buildTextureStage(shading.texture, *ctx.textures, shading.texCoord, stage.emplace());
+    state.texCoordUnits = 0;
+    for (int i = 0; i < stage->unitCount; ++i) {
+      fragment::TextureStage::Unit& unit = stage->units[i];
+      if (!(shading.varyingUnits >> unit.unit & 1u)) continue;
+      if (unit.unit == 0) {
+        // Unit 0's varying is the bitmap texture's coordinates: 0 to 1
+        // over Mesa's quad (the 512 x 32 cache, or the bitmap itself).
+        quadCoords.emplace();
+        quadCoords->x = static_cast<float>(x);
+        quadCoords->y = static_cast<float>(y);
+        quadCoords->width = static_cast<float>(width);
+        quadCoords->height = static_cast<float>(height);
+        state.texCoordUnits = 1;
+      } else {
+        for (float& c : unit.currentCoord) c = 0.0f;  // a varying the quad does not carry
+      }
+    }
+    state.textures = &*stage;
+  }
+  const float secondary[4] = {shading.secondary.r, shading.secondary.g, shading.secondary.b, 0.0f};
+  if (shading.colorSum) state.varyingCount = 8;
   if (!scissorEnabled) {  // the cache's scissor enable, not the current one
     state.scissorX0 = state.scissorY0 = 0;
     state.scissorX1 = ctx.framebuffer.width();
@@ -74,7 +130,8 @@ void drawBits(Context& ctx, raster::RasterState state, long long x, long long y,
           raster::drawPixelRun(state, fb, static_cast<int>(std::max<long long>(x0, state.scissorX0)),
                                static_cast<int>(y + j),
                                static_cast<int>(std::min<long long>(x1, state.scissorX1)),
-                               static_cast<int>(y + j + 1), z, color);
+                               static_cast<int>(y + j + 1), z, color, secondary,
+                               quadCoords ? &*quadCoords : nullptr);
         i = end;
       }
     }
@@ -89,7 +146,7 @@ void flushBitmapCache(Context& ctx) {
   c.empty = true;
   if (ctx.framebuffer.bound())
     drawBits(ctx, c.validated, c.xpos, c.ypos, BitmapCache::kWidth, BitmapCache::kHeight, c.on.data(),
-             BitmapCache::kWidth, false, c.zpos, c.color, c.scissorEnabled);
+             BitmapCache::kWidth, false, c.zpos, c.color, c.scissorEnabled, c.shading);
 }
 
 void drawBitmap(Context& ctx, int width, int height, float xorig, float yorig, const uint8_t* bits,
@@ -107,8 +164,9 @@ void drawBitmap(Context& ctx, int width, int height, float xorig, float yorig, c
   if (fromList) flushBitmapCache(ctx);
   const raster::RasterState state = pixelRectRasterState(ctx);
   c.validated = state;  // st_Bitmap validates before it accumulates
+  c.shading = bitmapShading(ctx);
   if (fromList || width > BitmapCache::kWidth || height > BitmapCache::kHeight)
-    return drawBits(ctx, state, x, y, width, height, bits, rowBytes, true, z, color, scissorEnabled);
+    return drawBits(ctx, state, x, y, width, height, bits, rowBytes, true, z, color, scissorEnabled, c.shading);
   // accum_bitmap: does it fit in the cache with the same colour and depth?
   long long px = 0, py = 0;
   if (!c.empty) {
@@ -233,12 +291,27 @@ void drawTexturedQuad(Context& ctx, const texture::TextureObject* object,
     return;
   fragment::TextureStage stage;
   if (object) {
-    fragment::TextureStage::Unit& unit = stage.units[0];
-    if (!texture::makeSamplerView(*object, GL_TEXTURE_2D, 0.0f, unit.view)) return;
-    unit.unit = 0;
-    unit.env.env.mode = GL_REPLACE;  // the fragment colour is the texel (gl_Color replaced)
-    unit.env.baseFormat = GL_RGBA;
-    stage.unitCount = 1;
+    fragment::TextureStage::Unit& image = stage.image;
+    if (!texture::makeSamplerView(*object, GL_TEXTURE_2D, 0.0f, image.view)) return;
+    image.unit = 0;
+    image.env.env.mode = GL_REPLACE;  // the fragment colour is the texel (gl_Color replaced)
+    image.env.baseFormat = GL_RGBA;
+    stage.hasImage = true;
+    // The user's texturing: Mesa runs the current fixed-function fragment
+    // program with the image in place of gl_Color. glDrawPixels overrides
+    // the vertex program (drawpix.c, _mesa_set_vp_override), so the program
+    // reads every texture coordinate as a varying: unit 0's becomes the
+    // current coordinates, untransformed (nir_lower_drawpixels'
+    // gl_MultiTexCoord0), the others are varyings the quad does not carry,
+    // (0, 0, 0, 0); so is the secondary colour (no colour sum), and the
+    // variant has no fog (MESA_FACTS.md "Pixel rectangles").
+    if (anyTextureEnabled(ctx.texture)) {
+      glm::vec4 coords[kMaxTextureUnits];
+      for (glm::vec4& c : coords) c = glm::vec4(0.0f);
+      coords[0] = ctx.current.texCoord[0];
+      buildTextureStage(ctx.texture, *ctx.textures, coords, stage);
+      for (int i = 0; i < stage.unitCount; ++i) stage.units[i].constantCoord = true;
+    }
   }
   // The quad goes down the draw module like any fan (st_draw_quad): in clip
   // space x / width * 2 - 1, clipped against the view volume when it

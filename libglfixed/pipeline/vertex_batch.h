@@ -53,6 +53,14 @@ struct VertexBatch {
     hasFogCoord = on;
     fogCoord.resize(on ? size() : 0, 0.0f);
   }
+  // The colour sum without lighting (GL_COLOR_SUM): each vertex's secondary
+  // colour, carried only while the draw reads it; else empty.
+  bool hasSecondaryColor = false;
+  std::vector<glm::vec4> secondaryColor;
+  void setHasSecondaryColor(bool on) {
+    hasSecondaryColor = on;
+    secondaryColor.resize(on ? size() : 0, glm::vec4(0, 0, 0, 1));
+  }
   size_t size() const { return position.size(); }
   void reset(GLenum primitiveMode, const MaterialPair& current) {
     mode = primitiveMode;
@@ -70,12 +78,14 @@ struct VertexBatch {
     edgeFlag.resize(n, 1);
     for (uint32_t m = texCoordUnits; m != 0; m &= m - 1) texCoord[__builtin_ctz(m)].resize(n, glm::vec4(0, 0, 0, 1));
     if (hasFogCoord) fogCoord.resize(n, 0.0f);
+    if (hasSecondaryColor) secondaryColor.resize(n, glm::vec4(0, 0, 0, 1));
   }
   // Appends vertices [first, last) of `from` (their material indexes as they are).
   void appendVertices(const VertexBatch& from, size_t first, size_t last) {
     // Texture coordinates: an empty batch takes the units of the one it copies.
     if (position.empty() && texCoordUnits != from.texCoordUnits) setTexCoordUnits(from.texCoordUnits);
     if (position.empty() && hasFogCoord != from.hasFogCoord) setHasFogCoord(from.hasFogCoord);
+    if (position.empty() && hasSecondaryColor != from.hasSecondaryColor) setHasSecondaryColor(from.hasSecondaryColor);
     position.insert(position.end(), from.position.begin() + first, from.position.begin() + last);
     normal.insert(normal.end(), from.normal.begin() + first, from.normal.begin() + last);
     color.insert(color.end(), from.color.begin() + first, from.color.begin() + last);
@@ -96,6 +106,13 @@ struct VertexBatch {
       else
         fogCoord.resize(position.size(), 0.0f);
     }
+    if (hasSecondaryColor) {
+      if (from.hasSecondaryColor)
+        secondaryColor.insert(secondaryColor.end(), from.secondaryColor.begin() + first,
+                              from.secondaryColor.begin() + last);
+      else
+        secondaryColor.resize(position.size(), glm::vec4(0, 0, 0, 1));
+    }
   }
   void eraseFirstVertices(size_t n) { eraseVertices(0, n); }
   // Erases vertices [first, last) (their material indexes as they are).
@@ -109,6 +126,7 @@ struct VertexBatch {
       texCoord[__builtin_ctz(m)].erase(texCoord[__builtin_ctz(m)].begin() + first,
                                        texCoord[__builtin_ctz(m)].begin() + last);
     if (hasFogCoord) fogCoord.erase(fogCoord.begin() + first, fogCoord.begin() + last);
+    if (hasSecondaryColor) secondaryColor.erase(secondaryColor.begin() + first, secondaryColor.begin() + last);
   }
 };
 

@@ -32,6 +32,8 @@ void drawPixelQuad(const RasterState& state, Framebuffer& fb, const PixelQuad& q
   const float s[4] = {q.s0, q.s1, q.s1, q.s0}, t[4] = {q.t0, q.t0, q.t1, q.t1};
   for (int i = 0; i < 4; ++i) {
     for (int k = 0; k < 4; ++k) v[i].varying[k] = q.color[k];
+    if (state.varyingCount == 8)
+      for (int k = 0; k < 4; ++k) v[i].varying[4 + k] = q.secondary[k];
     if (q.texCoords) {
       v[i].varying[kTexCoordVarying + 0] = s[i];
       v[i].varying[kTexCoordVarying + 1] = t[i];
@@ -41,12 +43,13 @@ void drawPixelQuad(const RasterState& state, Framebuffer& fb, const PixelQuad& q
   }
   float flat[kMaxVaryings] = {};
   for (int k = 0; k < 4; ++k) flat[k] = q.color[k];
+  for (int k = 0; k < 4; ++k) flat[4 + k] = q.secondary[k];
   drawTriangle(state, fb, v[0], v[1], v[2], flat);
   drawTriangle(state, fb, v[0], v[2], v[3], flat);
 }
 
 void drawPixelRun(const RasterState& state, Framebuffer& fb, int x0, int y0, int x1, int y1, float z,
-                  const float color[4]) {
+                  const float color[4], const float secondary[4], const QuadTexCoords* coords) {
   x0 = std::max(x0, state.scissorX0);
   y0 = std::max(y0, state.scissorY0);
   x1 = std::min(x1, state.scissorX1);
@@ -59,6 +62,14 @@ void drawPixelRun(const RasterState& state, Framebuffer& fb, int x0, int y0, int
   q.y1 = static_cast<float>(y1);
   q.z = z;
   for (int k = 0; k < 4; ++k) q.color[k] = color[k];
+  for (int k = 0; k < 4; ++k) q.secondary[k] = secondary[k];
+  if (coords) {  // s0, t0 at (x0, y1); s1, t1 at (x1, y0)
+    q.texCoords = true;
+    q.s0 = (q.x0 - coords->x) / coords->width;
+    q.s1 = (q.x1 - coords->x) / coords->width;
+    q.t0 = (q.y1 - coords->y) / coords->height;
+    q.t1 = (q.y0 - coords->y) / coords->height;
+  }
   drawPixelQuad(state, fb, q);
 }
 

@@ -19,6 +19,7 @@ struct PixelQuad {
   float x0 = 0, y0 = 0, x1 = 0, y1 = 0, z = 0;
   float s0 = 0, t0 = 0, s1 = 1, t1 = 1;
   float color[4] = {1, 1, 1, 1};
+  float secondary[4] = {0, 0, 0, 0};  // varyings 4..7 when state.varyingCount is 8 (the colour sum)
   bool texCoords = false;  // whether unit 0's coordinates are varyings
 };
 void drawPixelQuad(const RasterState& state, Framebuffer& fb, const PixelQuad& quad);
@@ -28,7 +29,13 @@ void drawPixelQuad(const RasterState& state, Framebuffer& fb, const PixelQuad& q
 // state tracker's quad covers exactly these pixels; its texture kills the
 // others). Cut to the state's scissor region first, so far-off positions
 // never reach the fixed-point set-up.
+// `coords` non-null: unit 0's coordinates are those of the quad of window
+// rectangle [x, x + width) x [y, y + height) going from 0 to 1 (Mesa's
+// bitmap quad: s along x, t up), at the run's corners.
+struct QuadTexCoords {
+  float x = 0, y = 0, width = 1, height = 1;
+};
 void drawPixelRun(const RasterState& state, Framebuffer& fb, int x0, int y0, int x1, int y1, float z,
-                  const float color[4]);
+                  const float color[4], const float secondary[4], const QuadTexCoords* coords = nullptr);
 
 }  // namespace glfixed::raster

@@ -12,9 +12,32 @@
 #include <cstdint>
 #include <vector>
 
+#include <glm/glm.hpp>
+
 #include "raster/raster.h"
+#include "state/attrib_groups.h"
 
 namespace glfixed {
+
+// What Mesa's fixed-function fragment program adds to a bitmap's fragments
+// (st_cb_bitmap.c runs it with the bitmap's kill as a prologue; drawpix.c's
+// glBitmap leaves the vertex program alone, so the program reads every input
+// that the fixed-function vertex stage would not vary as a constant): the
+// enabled units' texturing with the current texture coordinates, untransformed,
+// and with GL_COLOR_SUM unlit the current secondary colour clamped. A unit
+// whose coordinates would vary (texgen, a texture matrix, point sprites, the
+// last draw's per-vertex coordinates) reads a varying: unit 0's is the
+// bitmap quad's own texture coordinates, the others' and the secondary
+// colour's (under lighting, or after per-vertex secondary colours) are
+// absent: (0, 0, 0, 0). No fog (the variant has none: MESA_FACTS.md).
+struct BitmapShading {
+  bool textured = false;
+  TextureAttrib texture;
+  glm::vec4 texCoord[kMaxTextureUnits];
+  uint32_t varyingUnits = 0;
+  bool colorSum = false;
+  glm::vec4 secondary{0, 0, 0, 0};
+};
 
 struct BitmapCache {
   static constexpr int kWidth = 512, kHeight = 32;
@@ -25,6 +48,7 @@ struct BitmapCache {
   bool scissorEnabled = false;  // the first bitmap's GL_SCISSOR_TEST
   // The state of the last glBitmap call (pipeline::pixelRectRasterState).
   raster::RasterState validated;
+  BitmapShading shading;  // also the last glBitmap's
   std::vector<uint8_t> on;  // kWidth * kHeight, row 0 the bottom row; 1: draw
 };
 

@@ -109,8 +109,8 @@ constexpr Capability kTable[] = {
           GL_COLOR_BUFFER_BIT, 0, kSettable),
     // Fog (fragment/fog.inc).
     entry(GL_FOG, field<&Context::fog, &FogAttrib::enabled>, GL_FOG_BIT, 0, kSettable),
-    // State without its stage yet.
-    entry(GL_COLOR_SUM, field<&Context::fog, &FogAttrib::colorSum>, GL_FOG_BIT, 0, kHeld),
+    // The colour sum without lighting (GL 2.1 §3.9; pipeline/draw.cpp).
+    entry(GL_COLOR_SUM, field<&Context::fog, &FogAttrib::colorSum>, GL_FOG_BIT, 0, kSettable),
     // Lines (primitive/lines.cpp) and points (primitive/points.cpp): drawn.
     entry(GL_LINE_SMOOTH, field<&Context::line, &LineAttrib::smooth>, GL_LINE_BIT, 0, kSettable),
     entry(GL_LINE_STIPPLE, field<&Context::line, &LineAttrib::stipple>, GL_LINE_BIT, 0, kSettable),

@@ -156,13 +156,14 @@ class Context {
     bool normalIsVertexData = false;  // the same for glNormal
     bool edgeFlagIsVertexData = false;  // and for glEdgeFlag (one float in Mesa's vertex)
     bool fogCoordIsVertexData = false;  // and for glFogCoord (one float)
+    bool secondaryColorIsVertexData = false;  // and for glSecondaryColor (three floats)
     uint32_t materialAttributes = 0;  // glMaterial components made vertex data (materialfv)
     int materialFloats = 0;
     bool colorIsVertexData() const { return colorSize != 0; }
     // Mesa's vertex_size.
     uint32_t vertexFloats() const {
       return static_cast<uint32_t>(positionSize + colorSize + (normalIsVertexData ? 3 : 0) +
-                                   (edgeFlagIsVertexData ? 1 : 0) + (fogCoordIsVertexData ? 1 : 0) +
+                                   (edgeFlagIsVertexData ? 1 : 0) + (fogCoordIsVertexData ? 1 : 0) + (secondaryColorIsVertexData ? 3 : 0) +
                                    materialFloats);
     }
   } vbo;
@@ -170,6 +171,11 @@ class Context {
   pipeline::VboStore vboStore;
   // glBitmap calls not drawn yet (state/bitmap_cache.h, pipeline/pixel_rect.cpp).
   BitmapCache bitmapCache;
+  // The texture units whose coordinates the last draw carried per vertex
+  // (Mesa's VertexProgram._VaryingInputs, which glBitmap's fragment program
+  // reads: state/bitmap_cache.h, BitmapShading).
+  uint32_t lastDrawTexCoordUnits = 0;
+  bool lastDrawSecondaryColorVaries = false;  // and whether it carried secondary colours
   // Lines (primitive/lines.cpp): the draw module's stipple counter, which Mesa
   // keeps from draw to draw (draw_pipe_stipple.c), and whether the next batch
   // continues the previous one's strip (a long array draw drawn in chunks,

@@ -209,6 +209,45 @@ TEST(OsmesaBufferTypeTest, FloatClearBlendAndRead) {
   EXPECT_NO_GL_ERROR();
 }
 
+// The colour sum without lighting (GL_COLOR_SUM, GL 2.1 §3.9): the current
+// secondary colour, clamped to [0, 1], is added to the clamped primary; on a
+// float buffer the sum is stored unclamped (1.5), on an 8-bit one it is
+// clamped at the write.
+TEST(OsmesaBufferTypeTest, UnlitColourSumIsUnclampedOnFloatBuffers) {
+  for (GLenum type : {GL_FLOAT, GL_UNSIGNED_BYTE}) {
+    TypedBuffer b(OSMESA_RGBA, type);
+    ASSERT_TRUE(b.ok());
+    glClearColor(0, 0, 0, 0);
+    glClear(GL_COLOR_BUFFER_BIT);
+    PixelOrtho();
+    glEnable(GL_COLOR_SUM);
+    glSecondaryColor3f(0.7f, 0.3f, 0.05f);
+    Point(0, 0.8f, 0.2f, 0.1f, 0.5f);
+    glSecondaryColor3f(1.5f, -0.5f, 0.3f);  // clamped: (1, 0, 0.3)
+    Point(1, 0.8f, 0.2f, 0.1f, 0.5f);
+    glDisable(GL_COLOR_SUM);
+    Point(2, 0.8f, 0.2f, 0.1f, 0.5f);
+    glFinish();
+    EXPECT_NO_GL_ERROR();
+    if (type == GL_FLOAT) {
+      const float* p = b.f32();
+      EXPECT_EQ(p[0], 0.8f + 0.7f);
+      EXPECT_EQ(p[1], 0.2f + 0.3f);
+      EXPECT_EQ(p[2], 0.1f + 0.05f);
+      EXPECT_EQ(p[3], 0.5f);  // alpha is not summed
+      EXPECT_EQ(p[4], 0.8f + 1.0f);
+      EXPECT_EQ(p[5], 0.2f);
+      EXPECT_EQ(p[6], 0.1f + 0.3f);
+      EXPECT_EQ(p[8], 0.8f);
+    } else {
+      GLubyte ub[12] = {};
+      glReadPixels(0, 0, 3, 1, GL_RGBA, GL_UNSIGNED_BYTE, ub);
+      const GLubyte want[12] = {255, 128, 38, 128, 255, 51, 102, 128, 204, 51, 26, 128};
+      for (int i = 0; i < 12; ++i) EXPECT_EQ(ub[i], want[i]) << "type " << type << " byte " << i;
+    }
+  }
+}
+
 // B5G6R5: a clear rounds from float; a fragment goes through llvmpipe's 8
 // bits (rint(c * 255), then the top bits): 0.123456 is byte 31, blue 3 (not
 // the rounded 4); glReadPixels widens by bit replication.

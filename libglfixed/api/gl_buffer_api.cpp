@@ -1,5 +1,8 @@
 // Buffer objects (GL 2.1 §2.9): names, data stores, mapping, queries, and
-// the four binding points (array, element array, pixel pack and unpack).
+// the six binding points (array, element array, pixel pack and unpack, copy
+// read and write). Ranges are mapped as ARB_map_buffer_range and copied as
+// ARB_copy_buffer say (both GL 3.0/3.1 §2.10), with Mesa's errors in Mesa's
+// order (reference/MESA_FACTS.md, "Buffer ranges and copies").
 #include <cstring>
 #include <new>
 #include <stdexcept>
@@ -7,6 +10,13 @@
 #include "api/api.h"
 
 using namespace glfixed;
+
+// GL 3.0's queries of a mapping (ARB_map_buffer_range has no names for them).
+#ifndef GL_BUFFER_ACCESS_FLAGS
+#define GL_BUFFER_ACCESS_FLAGS 0x911F
+#define GL_BUFFER_MAP_LENGTH 0x9120
+#define GL_BUFFER_MAP_OFFSET 0x9121
+#endif
 
 namespace {
 
@@ -17,6 +27,8 @@ GLuint* bindingOf(Context& ctx, GLenum target) {
     case GL_ELEMENT_ARRAY_BUFFER: return &ctx.vertexArray.elementArrayBufferBinding;
     case GL_PIXEL_PACK_BUFFER: return &ctx.pixelStore.pixelPackBufferBinding;
     case GL_PIXEL_UNPACK_BUFFER: return &ctx.pixelStore.pixelUnpackBufferBinding;
+    case GL_COPY_READ_BUFFER: return &ctx.copyBuffer.read;
+    case GL_COPY_WRITE_BUFFER: return &ctx.copyBuffer.write;
     default: return nullptr;
   }
 }
@@ -50,18 +62,71 @@ bool isUsage(GLenum usage) {
 }
 
 // The checks glBufferSubData and glGetBufferSubData share (GL 2.1 §2.9).
-BufferObject* subDataBuffer(Context& ctx, GLenum target, GLintptr offset, GLsizeiptr size) {
+// Mesa lets glBufferSubData write outside a mapped range (GL 3.0 forbids
+// either command on a mapped buffer); glGetBufferSubData it refuses while
+// any range is mapped.
+BufferObject* subDataBuffer(Context& ctx, GLenum target, GLintptr offset, GLsizeiptr size, bool writes) {
   BufferObject* b = boundBuffer(ctx, target);
   if (!b) return nullptr;
   if (offset < 0 || size < 0 || offset > b->size() || size > b->size() - offset) {
     ctx.recordError(GL_INVALID_VALUE);
     return nullptr;
   }
-  if (b->mapped) {
+  if (writes ? b->rangeMapped(offset, size) : b->mapped) {
     ctx.recordError(GL_INVALID_OPERATION);
     return nullptr;
   }
   return b;
+}
+
+// glMapBuffer and glMapBufferRange after the buffer is found: the checks of
+// GL 3.0 §2.10.1 in Mesa's order, then the mapping, which is the store
+// itself. Nothing is discarded: the invalidate bits leave the old bytes,
+// as llvmpipe does (what a range holds after them is undefined, and Mesa's
+// mapping shows the old contents too); nor is anything to wait for, so
+// GL_MAP_UNSYNCHRONIZED_BIT and an explicit flush change nothing either.
+void* mapRange(Context& ctx, BufferObject& b, GLintptr offset, GLsizeiptr length, GLbitfield access) {
+  if (offset < 0 || length < 0) {
+    ctx.recordError(GL_INVALID_VALUE);
+    return nullptr;
+  }
+  // GL 4.5 makes an empty range an error (Mesa's glMapBuffer of an empty
+  // store too).
+  if (length == 0) {
+    ctx.recordError(GL_INVALID_OPERATION);
+    return nullptr;
+  }
+  const GLbitfield kAccessBits = GL_MAP_READ_BIT | GL_MAP_WRITE_BIT | GL_MAP_INVALIDATE_RANGE_BIT |
+                                 GL_MAP_INVALIDATE_BUFFER_BIT | GL_MAP_FLUSH_EXPLICIT_BIT |
+                                 GL_MAP_UNSYNCHRONIZED_BIT;
+  // ARB_buffer_storage's GL_MAP_PERSISTENT_BIT and GL_MAP_COHERENT_BIT:
+  // Mesa knows them, and refuses them later for a glBufferData store.
+  const GLbitfield kStorageBits = 0x40 | 0x80;
+  if (access & ~(kAccessBits | kStorageBits)) {
+    ctx.recordError(GL_INVALID_VALUE);
+    return nullptr;
+  }
+  const bool read = access & GL_MAP_READ_BIT, write = access & GL_MAP_WRITE_BIT;
+  if ((!read && !write) ||
+      (read && (access & (GL_MAP_INVALIDATE_RANGE_BIT | GL_MAP_INVALIDATE_BUFFER_BIT | GL_MAP_UNSYNCHRONIZED_BIT))) ||
+      ((access & GL_MAP_FLUSH_EXPLICIT_BIT) && !write) || (access & kStorageBits)) {
+    ctx.recordError(GL_INVALID_OPERATION);
+    return nullptr;
+  }
+  if (offset > b.size() || length > b.size() - offset) {
+    ctx.recordError(GL_INVALID_VALUE);
+    return nullptr;
+  }
+  if (b.mapped) {
+    ctx.recordError(GL_INVALID_OPERATION);
+    return nullptr;
+  }
+  b.mapped = true;
+  b.accessFlags = access;
+  b.mapOffset = offset;
+  b.mapLength = length;
+  b.mapPointer = b.data.data() + offset;
+  return b.mapPointer;
 }
 
 }  // namespace
@@ -103,6 +168,8 @@ GLAPI void APIENTRY glDeleteBuffers(GLsizei n, const GLuint* buffers) {
     unbind(v.elementArrayBufferBinding);
     unbind(ctx->pixelStore.pixelPackBufferBinding);
     unbind(ctx->pixelStore.pixelUnpackBufferBinding);
+    unbind(ctx->copyBuffer.read);
+    unbind(ctx->copyBuffer.write);
     auto orphan = [name](ClientArray& c) {
       if (c.bufferBinding != name) return;
       c.bufferBinding = 0;
@@ -130,9 +197,7 @@ GLAPI void APIENTRY glBufferData(GLenum target, GLsizeiptr size, const void* dat
   BufferObject* b = boundBuffer(*ctx, target);
   if (!b) return;
   // A new data store: a mapping of the old one ends (§2.9).
-  b->mapped = false;
-  b->mapPointer = nullptr;
-  b->access = GL_READ_WRITE;
+  b->unmap();
   b->usage = usage;
   try {
     DataStore store(static_cast<size_t>(size));  // zeros (StoreAllocator)
@@ -150,14 +215,14 @@ GLAPI void APIENTRY glBufferData(GLenum target, GLsizeiptr size, const void* dat
 GLAPI void APIENTRY glBufferSubData(GLenum target, GLintptr offset, GLsizeiptr size, const void* data) {
   Context* ctx = api::contextForQuery();
   if (!ctx) return;
-  BufferObject* b = subDataBuffer(*ctx, target, offset, size);
+  BufferObject* b = subDataBuffer(*ctx, target, offset, size, true);
   if (b && data && size > 0) std::memcpy(b->data.data() + offset, data, static_cast<size_t>(size));
 }
 
 GLAPI void APIENTRY glGetBufferSubData(GLenum target, GLintptr offset, GLsizeiptr size, void* data) {
   Context* ctx = api::contextForQuery();
   if (!ctx) return;
-  BufferObject* b = subDataBuffer(*ctx, target, offset, size);
+  BufferObject* b = subDataBuffer(*ctx, target, offset, size, false);
   if (b && data && size > 0) std::memcpy(data, b->data.data() + offset, static_cast<size_t>(size));
 }
 
@@ -174,16 +239,54 @@ GLAPI void* APIENTRY glMapBuffer(GLenum target, GLenum access) {
   }
   BufferObject* b = boundBuffer(*ctx, target);
   if (!b) return nullptr;
-  if (b->mapped) {
-    ctx->recordError(GL_INVALID_OPERATION);
-    return nullptr;
-  }
-  b->mapped = true;
-  b->access = access;
-  // The store is the mapping: a zero-size buffer maps to a non-null pointer too.
-  static uint8_t emptyStore;
-  b->mapPointer = b->data.empty() ? &emptyStore : b->data.data();
-  return b->mapPointer;
+  // The whole store, with the flags GL 3.0 §2.10.1 gives each access.
+  const GLbitfield flags = access == GL_READ_ONLY    ? GL_MAP_READ_BIT
+                           : access == GL_WRITE_ONLY ? GL_MAP_WRITE_BIT
+                                                     : GL_MAP_READ_BIT | GL_MAP_WRITE_BIT;
+  return mapRange(*ctx, *b, 0, b->size(), flags);
+}
+
+GLAPI void* APIENTRY glMapBufferRange(GLenum target, GLintptr offset, GLsizeiptr length, GLbitfield access) {
+  Context* ctx = api::contextForQuery();
+  if (!ctx) return nullptr;
+  BufferObject* b = boundBuffer(*ctx, target);
+  if (!b) return nullptr;
+  return mapRange(*ctx, *b, offset, length, access);
+}
+
+// Offsets are within the mapped range. The mapping is the store: there is
+// nothing to copy back.
+GLAPI void APIENTRY glFlushMappedBufferRange(GLenum target, GLintptr offset, GLsizeiptr length) {
+  Context* ctx = api::contextForQuery();
+  if (!ctx) return;
+  BufferObject* b = boundBuffer(*ctx, target);
+  if (!b) return;
+  if (offset < 0 || length < 0) return ctx->recordError(GL_INVALID_VALUE);
+  if (!b->mapped || !(b->accessFlags & GL_MAP_FLUSH_EXPLICIT_BIT)) return ctx->recordError(GL_INVALID_OPERATION);
+  if (offset > b->mapLength || length > b->mapLength - offset) return ctx->recordError(GL_INVALID_VALUE);
+}
+
+// ARB_copy_buffer: any two binding points, the same buffer too if the
+// ranges do not overlap. Not compiled into display lists (it runs at once,
+// as glBufferSubData does; piglit arb_copy_buffer-dlist). Mesa refuses a
+// mapped buffer even when the mapped range is elsewhere.
+GLAPI void APIENTRY glCopyBufferSubData(GLenum readTarget, GLenum writeTarget, GLintptr readOffset,
+                                        GLintptr writeOffset, GLsizeiptr size) {
+  Context* ctx = api::contextForQuery();
+  if (!ctx) return;
+  BufferObject* src = boundBuffer(*ctx, readTarget);
+  if (!src) return;
+  BufferObject* dst = boundBuffer(*ctx, writeTarget);
+  if (!dst) return;
+  if (src->mapped || dst->mapped) return ctx->recordError(GL_INVALID_OPERATION);
+  if (readOffset < 0 || writeOffset < 0 || size < 0) return ctx->recordError(GL_INVALID_VALUE);
+  if (size > src->size() || readOffset > src->size() - size || size > dst->size() ||
+      writeOffset > dst->size() - size)
+    return ctx->recordError(GL_INVALID_VALUE);
+  if (src == dst && readOffset < writeOffset + size && writeOffset < readOffset + size)
+    return ctx->recordError(GL_INVALID_VALUE);
+  if (size > 0)
+    std::memmove(dst->data.data() + writeOffset, src->data.data() + readOffset, static_cast<size_t>(size));
 }
 
 GLAPI GLboolean APIENTRY glUnmapBuffer(GLenum target) {
@@ -195,26 +298,28 @@ GLAPI GLboolean APIENTRY glUnmapBuffer(GLenum target) {
     ctx->recordError(GL_INVALID_OPERATION);
     return GL_FALSE;
   }
-  b->mapped = false;
-  b->mapPointer = nullptr;
+  b->unmap();
   return GL_TRUE;  // the store is never lost
 }
 
 GLAPI void APIENTRY glGetBufferParameteriv(GLenum target, GLenum pname, GLint* params) {
   Context* ctx = api::contextForQuery();
   if (!ctx) return;
-  if (!bindingOf(*ctx, target)) return ctx->recordError(GL_INVALID_ENUM);
-  if (pname != GL_BUFFER_SIZE && pname != GL_BUFFER_USAGE && pname != GL_BUFFER_ACCESS &&
-      pname != GL_BUFFER_MAPPED)
-    return ctx->recordError(GL_INVALID_ENUM);
+  // Mesa's order: the buffer (GL_INVALID_OPERATION for 0) before the pname.
   BufferObject* b = boundBuffer(*ctx, target);
-  if (!b || !params) return;
+  if (!b) return;
+  GLint value;
   switch (pname) {
-    case GL_BUFFER_SIZE: *params = static_cast<GLint>(b->size()); break;
-    case GL_BUFFER_USAGE: *params = static_cast<GLint>(b->usage); break;
-    case GL_BUFFER_ACCESS: *params = static_cast<GLint>(b->access); break;
-    case GL_BUFFER_MAPPED: *params = b->mapped ? GL_TRUE : GL_FALSE; break;
+    case GL_BUFFER_SIZE: value = static_cast<GLint>(b->size()); break;
+    case GL_BUFFER_USAGE: value = static_cast<GLint>(b->usage); break;
+    case GL_BUFFER_ACCESS: value = static_cast<GLint>(b->access()); break;
+    case GL_BUFFER_MAPPED: value = b->mapped ? GL_TRUE : GL_FALSE; break;
+    case GL_BUFFER_ACCESS_FLAGS: value = static_cast<GLint>(b->accessFlags); break;
+    case GL_BUFFER_MAP_OFFSET: value = static_cast<GLint>(b->mapOffset); break;
+    case GL_BUFFER_MAP_LENGTH: value = static_cast<GLint>(b->mapLength); break;
+    default: return ctx->recordError(GL_INVALID_ENUM);
   }
+  if (params) *params = value;
 }
 
 GLAPI void APIENTRY glGetBufferPointerv(GLenum target, GLenum pname, void** params) {

@@ -20,9 +20,9 @@ constexpr const char* kGLVersionString = "1.5 libglfixed 0.1.0";
 constexpr const char* kGLVendorString = "libglfixed";
 constexpr const char* kGLRendererString = "libglfixed fixed-function software renderer";
 constexpr const char* kGLExtensionsString =
-    "GL_ARB_depth_texture GL_ARB_framebuffer_object GL_ARB_multisample GL_ARB_multitexture "
-    "GL_ARB_occlusion_query GL_ARB_pixel_buffer_object GL_ARB_point_parameters GL_ARB_point_sprite "
-    "GL_ARB_provoking_vertex "
+    "GL_ARB_copy_buffer GL_ARB_depth_texture GL_ARB_framebuffer_object GL_ARB_map_buffer_range "
+    "GL_ARB_multisample GL_ARB_multitexture GL_ARB_occlusion_query GL_ARB_pixel_buffer_object "
+    "GL_ARB_point_parameters GL_ARB_point_sprite GL_ARB_provoking_vertex "
     "GL_ARB_shadow GL_ARB_texture_border_clamp "
     "GL_ARB_texture_cube_map GL_ARB_texture_env_add GL_ARB_texture_env_combine GL_ARB_texture_env_crossbar "
     "GL_ARB_texture_env_dot3 GL_ARB_texture_mirrored_repeat GL_ARB_texture_non_power_of_two "

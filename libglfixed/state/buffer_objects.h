@@ -55,10 +55,33 @@ using DataStore = std::vector<uint8_t, StoreAllocator<uint8_t>>;
 struct BufferObject {
   DataStore data;  // the data store; its size is GL_BUFFER_SIZE
   GLenum usage = GL_STATIC_DRAW;
-  GLenum access = GL_READ_WRITE;
+  // The mapping (glMapBuffer maps the whole store, glMapBufferRange a range
+  // of it; GL 3.0 §2.10.1): its GL_MAP_*_BIT flags (GL_BUFFER_ACCESS_FLAGS),
+  // GL_BUFFER_MAP_OFFSET, GL_BUFFER_MAP_LENGTH and GL_BUFFER_MAP_POINTER, the
+  // address of the range's first byte. All 0 while unmapped.
   bool mapped = false;
-  void* mapPointer = nullptr;  // GL_BUFFER_MAP_POINTER
+  GLbitfield accessFlags = 0;
+  GLintptr mapOffset = 0;
+  GLsizeiptr mapLength = 0;
+  void* mapPointer = nullptr;
   GLsizeiptr size() const { return static_cast<GLsizeiptr>(data.size()); }
+  // GL_BUFFER_ACCESS, from the flags: READ_WRITE while unmapped, as Mesa
+  // answers after glUnmapBuffer (GL 3.0 keeps the last glMapBuffer's).
+  GLenum access() const {
+    const bool read = accessFlags & GL_MAP_READ_BIT, write = accessFlags & GL_MAP_WRITE_BIT;
+    return read && !write ? GL_READ_ONLY : write && !read ? GL_WRITE_ONLY : GL_READ_WRITE;
+  }
+  // True if [offset, offset + length) meets the mapped range.
+  bool rangeMapped(GLintptr offset, GLsizeiptr length) const {
+    return mapped && offset + length > mapOffset && offset < mapOffset + mapLength;
+  }
+  void unmap() {
+    mapped = false;
+    accessFlags = 0;
+    mapOffset = 0;
+    mapLength = 0;
+    mapPointer = nullptr;
+  }
 };
 
 class BufferObjects {

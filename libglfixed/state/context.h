@@ -68,6 +68,12 @@ class Context {
   LightingAttrib lighting;
   VertexArrayAttrib vertexArray;
   BufferObjects buffers;
+  // GL_COPY_READ_BUFFER and GL_COPY_WRITE_BUFFER (ARB_copy_buffer): binding
+  // points for glCopyBufferSubData, in no attribute group: glPopClientAttrib
+  // leaves them as they are, as Mesa does.
+  struct CopyBufferBindings {
+    GLuint read = 0, write = 0;
+  } copyBuffer;
   QueryObjects queries;  // occlusion queries, in no attribute group
   std::vector<ClientAttribEntry> clientAttribStack;
   // The groups whose stages come later (state/attrib_groups.h).

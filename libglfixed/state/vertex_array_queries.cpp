@@ -97,6 +97,8 @@ bool getVertexArrayState(const Context& ctx, GLenum pname, GLdouble* out, int* c
     case GL_ELEMENT_ARRAY_BUFFER_BINDING: out[0] = a.elementArrayBufferBinding; return true;
     case GL_PIXEL_PACK_BUFFER_BINDING: out[0] = ctx.pixelStore.pixelPackBufferBinding; return true;
     case GL_PIXEL_UNPACK_BUFFER_BINDING: out[0] = ctx.pixelStore.pixelUnpackBufferBinding; return true;
+    case GL_COPY_READ_BUFFER: out[0] = ctx.copyBuffer.read; return true;  // = GL_COPY_READ_BUFFER_BINDING
+    case GL_COPY_WRITE_BUFFER: out[0] = ctx.copyBuffer.write; return true;
     case GL_CLIENT_ATTRIB_STACK_DEPTH: out[0] = double(ctx.clientAttribStack.size()); return true;
     case GL_MAX_CLIENT_ATTRIB_STACK_DEPTH: out[0] = kMaxClientAttribStackDepth; return true;
     // Recommended sizes only (GL 2.1 §2.8): any count may be drawn.

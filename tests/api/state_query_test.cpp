@@ -489,6 +489,8 @@ TEST_F(StateQueryTest, AdvertisedExtensionsHaveTheirCommands) {
        {"glBindBufferARB", "glDeleteBuffersARB", "glGenBuffersARB", "glIsBufferARB", "glBufferDataARB",
         "glBufferSubDataARB", "glGetBufferSubDataARB", "glMapBufferARB", "glUnmapBufferARB",
         "glGetBufferParameterivARB", "glGetBufferPointervARB"}},
+      {"GL_ARB_map_buffer_range", {"glMapBufferRange", "glFlushMappedBufferRange"}},
+      {"GL_ARB_copy_buffer", {"glCopyBufferSubData"}},
       {"GL_EXT_draw_range_elements", {"glDrawRangeElementsEXT"}},
       {"GL_ARB_multisample", {"glSampleCoverageARB"}},
       {"GL_ARB_occlusion_query",

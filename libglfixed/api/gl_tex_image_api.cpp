@@ -30,6 +30,15 @@ GLenum checkFormats(GLenum base, GLenum format, GLenum type) {
   return GL_NO_ERROR;
 }
 
+// GL 2.1 §3.8.1: a one- or two-dimensional image ignores GL_UNPACK_SKIP_IMAGES
+// (and glGetTexImage GL_PACK_SKIP_IMAGES); the skipped rows still count for a
+// 1D image, as on Mesa (measured).
+PixelStoreAttrib storeFor(const PixelStoreAttrib& s, int dims) {
+  PixelStoreAttrib r = s;
+  if (dims < 3) r.unpackSkipImages = r.packSkipImages = 0;
+  return r;
+}
+
 void texImage(int dims, GLenum target, GLint level, GLint internalFormat, GLsizei width, GLsizei height,
               GLsizei depth, GLint border, GLenum format, GLenum type, const void* pixels) {
   Context* ctx = api::contextForSetter();
@@ -68,7 +77,8 @@ void texImage(int dims, GLenum target, GLint level, GLint internalFormat, GLsize
   if (!legal) return ctx->recordError(GL_INVALID_VALUE);
   if (!fits) return ctx->recordError(GL_OUT_OF_MEMORY);
 
-  const texture::ClientLayout layout = texture::unpackLayout(ctx->pixelStore, width, height, format, type);
+  const texture::ClientLayout layout =
+      texture::unpackLayout(storeFor(ctx->pixelStore, dims), width, height, format, type);
   GLenum error;
   const uint8_t* source =
       api::pixelBufferMemory(*ctx, ctx->pixelStore.pixelUnpackBufferBinding,
@@ -105,7 +115,8 @@ void texSubImage(int dims, GLenum target, GLint level, GLint x, GLint y, GLint z
   if (x < 0 || y < 0 || z < 0 || int64_t(x) + width > image.width || int64_t(y) + height > image.height ||
       int64_t(z) + depth > image.depth)
     return ctx->recordError(GL_INVALID_VALUE);
-  const texture::ClientLayout layout = texture::unpackLayout(ctx->pixelStore, width, height, format, type);
+  const texture::ClientLayout layout =
+      texture::unpackLayout(storeFor(ctx->pixelStore, dims), width, height, format, type);
   GLenum error;
   const uint8_t* source =
       api::pixelBufferMemory(*ctx, ctx->pixelStore.pixelUnpackBufferBinding,
@@ -121,12 +132,13 @@ void texSubImage(int dims, GLenum target, GLint level, GLint x, GLint y, GLint z
 // The bytes a glTexImage command reads, for its display list copy (§5.4:
 // the image is captured at compile time). 0 without data or with a pixel
 // unpack buffer (then the offset is recorded as is).
-size_t compiledBytes(GLsizei width, GLsizei height, GLsizei depth, GLenum format, GLenum type,
+size_t compiledBytes(int dims, GLsizei width, GLsizei height, GLsizei depth, GLenum format, GLenum type,
                      const void* pixels) {
   Context* ctx = currentContext();
   if (!ctx || !pixels || ctx->pixelStore.pixelUnpackBufferBinding) return 0;
   if (width < 0 || height < 0 || depth < 0 || texture::checkFormatAndType(format, type)) return 0;
-  return texture::unpackLayout(ctx->pixelStore, width, height, format, type).extent(width, height, depth);
+  return texture::unpackLayout(storeFor(ctx->pixelStore, dims), width, height, format, type)
+      .extent(width, height, depth);
 }
 
 // §5.4: the proxy commands are executed at once, never compiled.
@@ -176,7 +188,7 @@ extern "C" {
 GLAPI void APIENTRY glTexImage1D(GLenum target, GLint level, GLint internalformat, GLsizei width,
                                  GLint border, GLenum format, GLenum type, const void* pixels) {
   if (!isProxy(target) &&
-      compiledImage(compiledBytes(width, 1, 1, format, type, pixels), pixels, [=](const void* p) {
+      compiledImage(compiledBytes(1, width, 1, 1, format, type, pixels), pixels, [=](const void* p) {
         glTexImage1D(target, level, internalformat, width, border, format, type, p);
       }))
     return;
@@ -187,7 +199,7 @@ GLAPI void APIENTRY glTexImage2D(GLenum target, GLint level, GLint internalforma
                                  GLsizei height, GLint border, GLenum format, GLenum type,
                                  const void* pixels) {
   if (!isProxy(target) &&
-      compiledImage(compiledBytes(width, height, 1, format, type, pixels), pixels, [=](const void* p) {
+      compiledImage(compiledBytes(2, width, height, 1, format, type, pixels), pixels, [=](const void* p) {
         glTexImage2D(target, level, internalformat, width, height, border, format, type, p);
       }))
     return;
@@ -198,7 +210,7 @@ GLAPI void APIENTRY glTexImage3D(GLenum target, GLint level, GLint internalforma
                                  GLsizei height, GLsizei depth, GLint border, GLenum format, GLenum type,
                                  const void* pixels) {
   if (!isProxy(target) &&
-      compiledImage(compiledBytes(width, height, depth, format, type, pixels), pixels, [=](const void* p) {
+      compiledImage(compiledBytes(3, width, height, depth, format, type, pixels), pixels, [=](const void* p) {
         glTexImage3D(target, level, internalformat, width, height, depth, border, format, type, p);
       }))
     return;
@@ -207,7 +219,7 @@ GLAPI void APIENTRY glTexImage3D(GLenum target, GLint level, GLint internalforma
 
 GLAPI void APIENTRY glTexSubImage1D(GLenum target, GLint level, GLint xoffset, GLsizei width, GLenum format,
                                     GLenum type, const void* pixels) {
-  if (compiledImage(compiledBytes(width, 1, 1, format, type, pixels), pixels,
+  if (compiledImage(compiledBytes(1, width, 1, 1, format, type, pixels), pixels,
                     [=](const void* p) { glTexSubImage1D(target, level, xoffset, width, format, type, p); }))
     return;
   texSubImage(1, target, level, xoffset, 0, 0, width, 1, 1, format, type, pixels);
@@ -215,7 +227,7 @@ GLAPI void APIENTRY glTexSubImage1D(GLenum target, GLint level, GLint xoffset, G
 
 GLAPI void APIENTRY glTexSubImage2D(GLenum target, GLint level, GLint xoffset, GLint yoffset, GLsizei width,
                                     GLsizei height, GLenum format, GLenum type, const void* pixels) {
-  if (compiledImage(compiledBytes(width, height, 1, format, type, pixels), pixels, [=](const void* p) {
+  if (compiledImage(compiledBytes(2, width, height, 1, format, type, pixels), pixels, [=](const void* p) {
         glTexSubImage2D(target, level, xoffset, yoffset, width, height, format, type, p);
       }))
     return;
@@ -225,7 +237,7 @@ GLAPI void APIENTRY glTexSubImage2D(GLenum target, GLint level, GLint xoffset, G
 GLAPI void APIENTRY glTexSubImage3D(GLenum target, GLint level, GLint xoffset, GLint yoffset, GLint zoffset,
                                     GLsizei width, GLsizei height, GLsizei depth, GLenum format, GLenum type,
                                     const void* pixels) {
-  if (compiledImage(compiledBytes(width, height, depth, format, type, pixels), pixels, [=](const void* p) {
+  if (compiledImage(compiledBytes(3, width, height, depth, format, type, pixels), pixels, [=](const void* p) {
         glTexSubImage3D(target, level, xoffset, yoffset, zoffset, width, height, depth, format, type, p);
       }))
     return;
@@ -278,7 +290,7 @@ GLAPI void APIENTRY glGetTexImage(GLenum target, GLint level, GLenum format, GLe
   const bool depthImage = texture::texelFormatInfo(image.format).baseFormat == GL_DEPTH_COMPONENT;
   if (depthImage != (format == GL_DEPTH_COMPONENT)) return ctx->recordError(GL_INVALID_OPERATION);
   const texture::ClientLayout layout =
-      texture::packLayout(ctx->pixelStore, image.width, image.height, format, type);
+      texture::packLayout(storeFor(ctx->pixelStore, dims), image.width, image.height, format, type);
   const size_t extent = layout.extent(image.width, image.height, image.depth);
   uint8_t* out = static_cast<uint8_t*>(pixels);
   if (const GLuint name = ctx->pixelStore.pixelPackBufferBinding) {

@@ -352,4 +352,45 @@ TEST_F(TextureUnpackTest, DepthTextures) {
   EXPECT_NO_GL_ERROR();
 }
 
+// GL 2.1 §3.8.1: one- and two-dimensional images ignore the skip-images
+// state, packing and unpacking; a 1D image still skips rows (as Mesa does).
+TEST_F(TextureUnpackTest, SkipImagesOnlyForThreeDimensions) {
+  GLubyte img[64];
+  for (int i = 0; i < 64; ++i) img[i] = static_cast<GLubyte>(i + 1);
+  GLubyte out[8] = {};
+  auto first = [&] { return std::array<int, 5>{out[0], out[1], out[2], out[3], out[4]}; };
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glPixelStorei(GL_UNPACK_SKIP_IMAGES, 1);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, img);
+  glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, out);
+  EXPECT_EQ(first(), (std::array<int, 5>{1, 2, 3, 4, 0}));
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, img + 8);
+  glTexImage1D(GL_TEXTURE_1D, 0, GL_RGBA, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, img);
+  glPixelStorei(GL_UNPACK_SKIP_IMAGES, 0);
+  glGetTexImage(GL_TEXTURE_1D, 0, GL_RGBA, GL_UNSIGNED_BYTE, out);
+  EXPECT_EQ(first(), (std::array<int, 5>{1, 2, 3, 4, 0}));
+  glPixelStorei(GL_PACK_SKIP_IMAGES, 1);
+  glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, out);
+  EXPECT_EQ(first(), (std::array<int, 5>{9, 10, 11, 12, 0}));
+  glPixelStorei(GL_PACK_SKIP_IMAGES, 0);
+  glPixelStorei(GL_UNPACK_SKIP_ROWS, 1);
+  glTexImage1D(GL_TEXTURE_1D, 0, GL_RGBA, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, img);
+  glPixelStorei(GL_UNPACK_SKIP_ROWS, 0);
+  glGetTexImage(GL_TEXTURE_1D, 0, GL_RGBA, GL_UNSIGNED_BYTE, out);
+  EXPECT_EQ(first(), (std::array<int, 5>{5, 6, 7, 8, 0}));
+  // A list replays the image it captured the same way.
+  glPixelStorei(GL_UNPACK_SKIP_IMAGES, 1);
+  const GLuint list = glGenLists(1);
+  glNewList(list, GL_COMPILE);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, img + 16);
+  glEndList();
+  glPixelStorei(GL_UNPACK_SKIP_IMAGES, 0);
+  glCallList(list);
+  glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, out);
+  EXPECT_EQ(first(), (std::array<int, 5>{17, 18, 19, 20, 0}));
+  glDeleteLists(list, 1);
+  EXPECT_NO_GL_ERROR();
+}
+
 }  // namespace

@@ -6,7 +6,7 @@
 // 22.3 (llvmpipe) and the tests run on both.
 #include <vector>
 
-#include "gl_test_fixture.h"
+#include "stencil_context.h"
 
 #ifndef GL_DEPTH_STENCIL
 #define GL_DEPTH_STENCIL 0x84F9
@@ -18,38 +18,16 @@
 namespace glfx_test {
 namespace {
 
-// A context with `depth` and `stencil` bits on a kWidth x kHeight buffer,
-// one unit a pixel.
-class PixelsContext {
+// A stencil context (stencil_context.h) whose images are packed and
+// unpacked a byte aligned.
+class PixelsContext : public StencilContext {
  public:
-  PixelsContext(int depth, int stencil) {
-    ctx_ = OSMesaCreateContextExt(OSMESA_RGBA, depth, stencil, 0, NULL);
-    buffer_.assign(kWidth * kHeight * 4, 0);
-    ok_ = ctx_ && OSMesaMakeCurrent(ctx_, buffer_.data(), GL_UNSIGNED_BYTE, kWidth, kHeight) == GL_TRUE;
-    glMatrixMode(GL_PROJECTION);
-    glLoadIdentity();
-    glOrtho(0, kWidth, 0, kHeight, -1, 1);
-    glMatrixMode(GL_MODELVIEW);
-    glLoadIdentity();
+  PixelsContext(int depth, int stencil) : StencilContext(depth, stencil) {
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
   }
-  ~PixelsContext() {
-    if (!ctx_) return;
-    OSMesaMakeCurrent(NULL, NULL, 0, 0, 0);
-    OSMesaDestroyContext(ctx_);
-  }
-  bool ok() const { return ok_; }
   // The red byte of a pixel of the client buffer.
-  int red(int x, int y) {
-    glFinish();
-    return buffer_[4 * (y * kWidth + x)];
-  }
-
- private:
-  OSMesaContext ctx_ = nullptr;
-  std::vector<unsigned char> buffer_;
-  bool ok_ = false;
+  int red(int x, int y) { return pixel(x, y)[0]; }
 };
 
 class StencilPixelsTest : public ::testing::Test {

@@ -5,7 +5,7 @@
 // and GL_DEPTH_STENCIL, every function and operation, and the face a
 // primitive takes. Every expectation was measured on Mesa 22.3 (llvmpipe);
 // the tests run on both.
-#include "gl_test_fixture.h"
+#include "stencil_context.h"
 
 #ifndef GL_DEPTH_STENCIL
 #define GL_DEPTH_STENCIL 0x84F9
@@ -17,37 +17,6 @@
 namespace glfx_test {
 namespace {
 
-// A context with `depth` and `stencil` bits on a kWidth x kHeight buffer,
-// one unit a pixel.
-class StencilContext {
- public:
-  StencilContext(int depth, int stencil) {
-    ctx_ = OSMesaCreateContextExt(OSMESA_RGBA, depth, stencil, 0, NULL);
-    buffer_.assign(kWidth * kHeight * 4, 0);
-    ok_ = ctx_ && OSMesaMakeCurrent(ctx_, buffer_.data(), GL_UNSIGNED_BYTE, kWidth, kHeight) == GL_TRUE;
-    glMatrixMode(GL_PROJECTION);
-    glLoadIdentity();
-    glOrtho(0, kWidth, 0, kHeight, -1, 1);
-    glMatrixMode(GL_MODELVIEW);
-    glLoadIdentity();
-  }
-  ~StencilContext() {
-    if (!ctx_) return;
-    OSMesaMakeCurrent(NULL, NULL, 0, 0, 0);
-    OSMesaDestroyContext(ctx_);
-  }
-  bool ok() const { return ok_; }
-  OSMesaContext get() const { return ctx_; }
-  const unsigned char* pixel(int x, int y) {
-    glFinish();
-    return &buffer_[4 * (y * kWidth + x)];
-  }
-
- private:
-  OSMesaContext ctx_ = nullptr;
-  std::vector<unsigned char> buffer_;
-  bool ok_ = false;
-};
 
 class StencilTest : public ::testing::Test {
  protected:

@@ -12,6 +12,7 @@
 #include "api/api.h"
 #include "api/list_record.h"
 #include "pipeline/array_draw.h"
+#include "pipeline/thread_scratch.h"
 
 using namespace glfixed;
 
@@ -440,7 +441,8 @@ GLAPI void APIENTRY glMultiDrawElements(GLenum mode, const GLsizei* count, GLenu
     if (count[i] < 0) return ctx->recordError(GL_INVALID_VALUE);
   pipeline::ArraySources src;
   if (!resolve(*ctx, src)) return;
-  static thread_local std::vector<pipeline::IndexList> lists;
+  struct SiteLists {};
+  std::vector<pipeline::IndexList>& lists = pipeline::threadScratch<std::vector<pipeline::IndexList>, SiteLists>();
   guarded(*ctx, [&] { lists.resize(static_cast<size_t>(drawcount)); });
   if (lists.size() != static_cast<size_t>(drawcount)) return;
   for (GLsizei i = 0; i < drawcount; ++i)

@@ -7,6 +7,7 @@
 #include "pipeline/draw.h"
 #include "primitive/assemble.h"
 #include "state/context.h"
+#include "pipeline/thread_scratch.h"
 
 namespace glfixed::pipeline {
 
@@ -56,7 +57,8 @@ bool isPointsOrLines(GLenum mode) {
 template <typename ElementAt>
 void appendPositions(const ArraySources& src, const Context& ctx, const ElementAt& elementAt, size_t from,
                      size_t to, VertexBatch& batch) {
-  static thread_local std::vector<uint32_t> elements;
+  struct SiteElements {};
+  std::vector<uint32_t>& elements = threadScratch<std::vector<uint32_t>, SiteElements>();
   elements.clear();
   for (size_t k = from; k < to; ++k) elements.push_back(elementAt(k));
   appendIndexed(src, ctx, elements.data(), elements.size(), batch);
@@ -71,7 +73,8 @@ template <typename ElementAt>
 void drawSegments(Context& ctx, const ArraySources& src, GLenum mode,
                   const std::vector<primitive::Segment>& segments, const ElementAt& elementAt,
                   Submission submission) {
-  static thread_local VertexBatch batch;
+  struct SiteBatch {};
+  VertexBatch& batch = threadScratch<VertexBatch, SiteBatch>();
   for (const primitive::Segment& seg : segments) {
     batch.reset(mode, ctx.lighting.material);
     if (seg.hubReplaced) {
@@ -95,7 +98,8 @@ void drawPointsOrLines(Context& ctx, const ArraySources& src, GLenum mode, uint3
                        const ElementAt& elementAt, Submission submission) {
   count = primitive::trimVertexCount(mode, count);
   if (count == 0) return;
-  static thread_local VertexBatch batch;
+  struct SiteBatch {};
+  VertexBatch& batch = threadScratch<VertexBatch, SiteBatch>();
   const bool strip = mode == GL_LINE_STRIP || mode == GL_LINE_LOOP;
   const GLenum chunkMode = count <= kLineChunk ? mode : (mode == GL_LINE_LOOP ? GL_LINE_STRIP : mode);
   for (uint32_t start = 0;;) {
@@ -172,14 +176,16 @@ void drawArrays(Context& ctx, const ArraySources& src, GLenum mode, uint32_t fir
   auto elementAt = [first](size_t k) { return first + static_cast<uint32_t>(k); };
   if (isPointsOrLines(mode))
     return drawPointsOrLines(ctx, src, mode, count, elementAt, Submission::kDrawArrays);
-  static thread_local std::vector<primitive::Segment> segments;
+  struct SiteSegments {};
+  std::vector<primitive::Segment>& segments = threadScratch<std::vector<primitive::Segment>, SiteSegments>();
   primitive::splitIntoSegments(mode, count, segments);
   if (mode == GL_TRIANGLE_FAN || mode == GL_POLYGON)
     return drawSegments(ctx, src, mode, segments, elementAt, Submission::kDrawArrays);
   // Every segment of the other modes starts at a multiple of its step (strips
   // keep their parity), so a chunk of whole segments drawn as a batch of its
   // own splits into the same segments again.
-  static thread_local VertexBatch batch;
+  struct SiteBatch {};
+  VertexBatch& batch = threadScratch<VertexBatch, SiteBatch>();
   for (size_t s = 0; s < segments.size(); s += kSegmentsPerChunk) {
     const size_t last = std::min(segments.size(), s + kSegmentsPerChunk) - 1;
     const uint32_t start = segments[s].start;
@@ -201,7 +207,10 @@ void drawElements(Context& ctx, const ArraySources& src, GLenum mode, const Inde
   if (drawnWhole(indices, count, bounds)) {
     // Mesa fetches and clip-tests every vertex of the range, used or not: one
     // outside sends the whole draw through its pipeline.
-    static thread_local VertexBatch batch, range;
+    struct SiteBatch {};
+    struct SiteRange {};
+    VertexBatch& batch = threadScratch<VertexBatch, SiteBatch>();
+    VertexBatch& range = threadScratch<VertexBatch, SiteRange>();
     batch.reset(mode, ctx.lighting.material);
     appendPositions(src, ctx, elementAt, 0, count, batch);
     range.reset(mode, ctx.lighting.material);
@@ -211,7 +220,8 @@ void drawElements(Context& ctx, const ArraySources& src, GLenum mode, const Inde
   }
   // Otherwise segments of at most 1024 indices, each fetching only the
   // vertices it uses (vsplit's vertex cache) and clip-tested alone.
-  static thread_local std::vector<primitive::Segment> segments;
+  struct SiteSegments {};
+  std::vector<primitive::Segment>& segments = threadScratch<std::vector<primitive::Segment>, SiteSegments>();
   primitive::splitIntoSegments(mode, count, segments, primitive::kMaxIndexedSegment);
   drawSegments(ctx, src, mode, segments, elementAt, Submission::kDrawElements);
 }

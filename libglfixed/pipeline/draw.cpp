@@ -13,6 +13,7 @@
 #include "vertex/lighting_math.h"
 #include "vertex/lighting_matrix.h"
 #include "vertex/vertex_stage.h"
+#include "pipeline/thread_scratch.h"
 
 namespace glfixed::pipeline {
 
@@ -258,7 +259,8 @@ void drawBatch(Context& ctx, const VertexBatch& batch, primitive::PrimitiveState
   ctx.lastDrawTexCoordUnits = batch.texCoordUnits;
   ctx.lastDrawSecondaryColorVaries = secondaryIsVertexData;
   const vertex::VertexState& vs = ctx.validate();
-  static thread_local ShadedVertices shaded;  // reused: no allocation per batch
+  struct SiteShaded {};
+  ShadedVertices& shaded = threadScratch<ShadedVertices, SiteShaded>();  // reused: no allocation per batch
   vertex::shadeBatch(vs, batch, shaded);
   const bool unlitColorSum = !vs.lighting && ctx.fog.colorSum;
   // Per-vertex secondary colours (glSecondaryColor as vertex data, or an
@@ -333,7 +335,8 @@ void drawBatch(Context& ctx, const VertexBatch& batch, primitive::PrimitiveState
 bool anyVertexOutside(Context& ctx, const VertexBatch& batch) {
   if (batch.size() == 0) return false;
   const vertex::VertexState& vs = ctx.validate();
-  static thread_local ShadedVertices shaded;
+  struct SiteShaded {};
+  ShadedVertices& shaded = threadScratch<ShadedVertices, SiteShaded>();
   vertex::shadeBatch(vs, batch, shaded);
   const primitive::UserClipPlanes user = userClipPlanes(ctx);  // clip planes: outside one counts
   for (const glm::vec4& c : shaded.clip)

@@ -18,6 +18,7 @@
 #include "primitive/viewport.h"
 #include "raster/raster.h"
 #include "state/lighting_attrib.h"
+#include "pipeline/thread_scratch.h"
 
 namespace glfixed::primitive {
 
@@ -165,18 +166,21 @@ void drawSegment(BatchContext& b, GLenum mode, const Segment& seg, bool indexed,
       dropsNineVertexTriangles([&](int i) -> const ClipVertex& { return clipVertices[global(i)]; }, b))
     return;
 
-  static thread_local std::vector<Triangle> triangles;
+  struct SiteTriangles {};
+  std::vector<Triangle>& triangles = pipeline::threadScratch<std::vector<Triangle>, SiteTriangles>();
   assembleTriangles(mode, seg.count, state.firstVertexConvention, b.flatInputs, path, triangles);
 
   const int provokingSlot = primitive::provokingSlot(state.firstVertexConvention);
   const int attribCount = b.clipAttribCount;  // texture coordinates (issue 14): and theirs
-  static thread_local ClippedPolygon polygon;
+  struct SitePolygon {};
+  ClippedPolygon& polygon = pipeline::threadScratch<ClippedPolygon, SitePolygon>();
   // Polygon area: the draw module's polygon stages, with each triangle's
   // boundary edges (unfilled.cpp). GL 2.1 §3.6.4: edge flags apply to
   // independent triangles, quads and polygons only (Mesa applies them to
   // strips and fans too: MESA_FACTS.md "Polygons").
   if (b.polygon.active) {
-    static thread_local std::vector<uint8_t> edgeBits;
+    struct SiteEdgeBits {};
+    std::vector<uint8_t>& edgeBits = pipeline::threadScratch<std::vector<uint8_t>, SiteEdgeBits>();
     const bool firstSegment = !seg.hubReplaced, lastSegment = seg.start + seg.count == b.vertexCount;
     assembleEdgeFlags(mode, seg.count, state.firstVertexConvention, firstSegment, lastSegment, edgeBits);
     const bool useFlags = b.edgeFlags && (mode == GL_TRIANGLES || mode == GL_QUADS || mode == GL_POLYGON);
@@ -293,9 +297,12 @@ void drawPrimitives(const PrimitiveState& state, const ShadedVertices& vertices,
     b.vertexCount = n;
   }
 
-  static thread_local std::vector<ClipVertex> clipVertices;
-  static thread_local std::vector<uint32_t> masks;
-  static thread_local std::vector<Segment> segments;
+  struct SiteClipVertices {};
+  std::vector<ClipVertex>& clipVertices = pipeline::threadScratch<std::vector<ClipVertex>, SiteClipVertices>();
+  struct SiteMasks {};
+  std::vector<uint32_t>& masks = pipeline::threadScratch<std::vector<uint32_t>, SiteMasks>();
+  struct SiteSegments {};
+  std::vector<Segment>& segments = pipeline::threadScratch<std::vector<Segment>, SiteSegments>();
   loadVertices(vertices, n, b.viewport, state.userClipPlanes, clipVertices, masks);
   if (points) return drawPointBatch(b, n, clipVertices, masks);
   if (lines) return drawLineBatch(b, state.mode, n, clipVertices, masks);

@@ -12,6 +12,7 @@
 #include <cstring>
 
 #include "primitive/batch_context.h"
+#include "pipeline/thread_scratch.h"
 
 namespace glfixed::primitive {
 
@@ -67,9 +68,13 @@ struct DeferredUnfilled {
   GLenum mode;
   unsigned edges;
 };
-thread_local std::vector<DeferredUnfilled> deferred;
+std::vector<DeferredUnfilled>& deferredUnfilled() {
+  struct Site {};
+  return pipeline::threadScratch<std::vector<DeferredUnfilled>, Site>();
+}
 
 void emitDeferred(const BatchContext& b, bool stippled) {
+  std::vector<DeferredUnfilled>& deferred = deferredUnfilled();
   if (deferred.empty()) return;
   BatchContext withStipple = b;
   withStipple.raster.stippleEveryPrimitive = stippled;
@@ -80,6 +85,7 @@ void emitDeferred(const BatchContext& b, bool stippled) {
 
 void deferUnfilled(const BatchContext& b, ClipVertex (&w)[3], const ClipVertex& prov, GLenum mode,
                    unsigned edges) {
+  std::vector<DeferredUnfilled>& deferred = deferredUnfilled();
   if (!deferred.empty() && deferred.back().mode != mode) emitDeferred(b, false);
   deferred.push_back({{w[0], w[1], w[2]}, prov, mode, edges});
 }

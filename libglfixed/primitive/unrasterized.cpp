@@ -12,6 +12,7 @@
 #include "primitive/cull.h"
 #include "primitive/viewport.h"
 #include "state/lighting_attrib.h"
+#include "pipeline/thread_scratch.h"
 
 namespace glfixed::primitive {
 
@@ -83,8 +84,10 @@ void emitClippedPolygon(const Batch& b, const ClippedPolygon& poly, const ClipVe
 
 void drawTriangles(const Batch& b, GLenum mode, uint32_t n, const std::vector<ClipVertex>& v,
                    const std::vector<uint32_t>& masks) {
-  static thread_local std::vector<Triangle> triangles;
-  static thread_local ClippedPolygon polygon;
+  struct SiteTriangles {};
+  std::vector<Triangle>& triangles = pipeline::threadScratch<std::vector<Triangle>, SiteTriangles>();
+  struct SitePolygon {};
+  ClippedPolygon& polygon = pipeline::threadScratch<ClippedPolygon, SitePolygon>();
   assembleTriangles(mode, n, b.state.firstVertexConvention, b.state.flat, DecomposePath::kPipeline,
                     triangles);
   const int provokingSlot = primitive::provokingSlot(b.state.firstVertexConvention);
@@ -144,8 +147,10 @@ void drawUnrasterized(const PrimitiveState& state, const ShadedVertices& vertice
                                   state.depthNear, state.depthFar, framebufferHeight),
           FaceRule{state.cullFace, state.cullFaceMode, state.frontFace}, vertices.hasBack};
 
-  static thread_local std::vector<ClipVertex> clipVertices;
-  static thread_local std::vector<uint32_t> masks;
+  struct SiteClipVertices {};
+  std::vector<ClipVertex>& clipVertices = pipeline::threadScratch<std::vector<ClipVertex>, SiteClipVertices>();
+  struct SiteMasks {};
+  std::vector<uint32_t>& masks = pipeline::threadScratch<std::vector<uint32_t>, SiteMasks>();
   loadVertices(vertices, n, b.viewport, state.userClipPlanes, clipVertices, masks);
 
   GLenum mode = state.mode;

@@ -30,6 +30,7 @@
 #include "vertex/light_constants.h"
 #include "vertex/lighting_math.h"
 #include "vertex/vertex_stage.h"
+#include "pipeline/thread_scratch.h"
 
 namespace glfixed::vertex {
 
@@ -132,7 +133,8 @@ const LightingSpace& lightingSpace(const LightingConstants& k, const glm::mat4& 
     glm::mat4 modelview{0};
     LightingSpace space;
   };
-  static thread_local Cache cache;
+  struct SiteCache {};
+  Cache& cache = pipeline::threadScratch<Cache, SiteCache>();
   if (cache.generation != k.generation || cache.modelview != modelview) {
     buildLightingSpace(k, modelview, cache.space);
     cache.generation = k.generation;
@@ -185,7 +187,8 @@ void lightBatch(const VertexState& state, const VertexBatch& batch, ShadedVertic
 
   // Light x material products, once per material snapshot (per vertex for the
   // components that follow the vertex colour).
-  static thread_local std::vector<Products> products;
+  struct SiteProducts {};
+  std::vector<Products>& products = pipeline::threadScratch<std::vector<Products>, SiteProducts>();
   products.resize(std::max<size_t>(snapshots, 1));
   for (size_t s = 0; s < products.size(); ++s) {
     const MaterialPair& m = snapshots ? batch.materials[s] : kDefaultMaterials;

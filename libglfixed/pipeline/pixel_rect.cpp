@@ -536,6 +536,31 @@ void drawColorPixels(Context& ctx, const PixelImage& image) {
   drawTexturedQuad(ctx, object.get(), nullptr, x, y, width, height, false);
 }
 
+// glCopyPixels' source rectangle cut to the buffer read (_mesa_clip_readpixels).
+struct CopySource {
+  long long srcX, srcY, x0, y0, x1, y1;
+  CopySource(int x, int y, int width, int height, int bufferWidth, int bufferHeight)
+      : srcX(x), srcY(y), x0(std::max<long long>(0, x)), y0(std::max<long long>(0, y)),
+        x1(std::min<long long>(bufferWidth, static_cast<long long>(x) + width)),
+        y1(std::min<long long>(bufferHeight, static_cast<long long>(y) + height)) {}
+  bool empty() const { return x0 >= x1 || y0 >= y1; }
+  // visit(sx, sy, row, col) for every source pixel inside the buffer and the
+  // width x height image it is read into, row 0 the image's top row: the
+  // whole source is read before anything is drawn (overlapping copies).
+  template <typename Visit>
+  void forEachPixel(int width, int height, Visit visit) const {
+    for (long long sy = y0; sy < y1; ++sy) {
+      const int row = static_cast<int>(srcY + height - 1 - sy);
+      if (row < 0 || row >= height) continue;
+      for (long long sx = x0; sx < x1; ++sx) {
+        const int col = static_cast<int>(sx - srcX);
+        if (col >= width) break;
+        visit(static_cast<int>(sx), static_cast<int>(sy), row, col);
+      }
+    }
+  }
+};
+
 void copyColorPixels(Context& ctx, int srcX, int srcY, int width, int height) {
   flushBitmapCache(ctx);
   Framebuffer& fb = ctx.framebuffer;
@@ -543,12 +568,9 @@ void copyColorPixels(Context& ctx, int srcX, int srcY, int width, int height) {
   const RasterPosState& rp = ctx.rasterPos;
   const long long x = roundToInt(rp.position.x), y = roundToInt(rp.position.y);
   const ColorBuffer& read = fb.read;
-  // The source cut to the read buffer (_mesa_clip_readpixels); wholly
-  // outside: nothing is drawn.
-  const long long rx0 = std::max<long long>(0, srcX), ry0 = std::max<long long>(0, srcY);
-  const long long rx1 = std::min<long long>(read.width, static_cast<long long>(srcX) + width);
-  const long long ry1 = std::min<long long>(read.height, static_cast<long long>(srcY) + height);
-  if (rx0 >= rx1 || ry0 >= ry1) return;
+  // Wholly outside the read buffer: nothing is drawn.
+  const CopySource source(srcX, srcY, width, height, read.width, read.height);
+  if (source.empty()) return;
   if (copyAsBlit(ctx, srcX, srcY, width, height, x, y)) return;
   width = std::min(width, texture::kMaxTextureSize);
   height = std::min(height, texture::kMaxTextureSize);
@@ -562,26 +584,20 @@ void copyColorPixels(Context& ctx, int srcX, int srcY, int width, int height) {
     return ctx.recordError(GL_OUT_OF_MEMORY);
   // The whole source is read before anything is drawn (overlapping copies),
   // texture row 0 the top row; what lies outside the read buffer stays 0.
-  for (long long sy = ry0; sy < ry1; ++sy) {
-    const int row = static_cast<int>(static_cast<long long>(srcY) + height - 1 - sy);
-    if (row < 0 || row >= height) continue;
-    for (long long sx = rx0; sx < rx1; ++sx) {
-      const int col = static_cast<int>(sx - srcX);
-      if (col >= width) break;
-      uint8_t rgba[4];
-      read.read(static_cast<int>(sx), static_cast<int>(sy), rgba);
-      uint8_t* t = texImage.texels.data() + size_t(row) * texImage.rowStride +
-                   size_t(col) * texture::texelFormatInfo(format).bytesPerTexel;
-      if (!scaleBias) {
-        for (int k = 0; k < 4; ++k) t[k] = rgba[k];
-      } else {
-        float c[4];
-        for (int k = 0; k < 4; ++k)
-          c[k] = static_cast<float>(rgba[k]) * (1.0f / 255.0f) * pm.scale[k] + pm.bias[k];
-        texture::storeTexel(format, c, t);
-      }
+  source.forEachPixel(width, height, [&](int sx, int sy, int row, int col) {
+    uint8_t rgba[4];
+    read.read(sx, sy, rgba);
+    uint8_t* t = texImage.texels.data() + size_t(row) * texImage.rowStride +
+                 size_t(col) * texture::texelFormatInfo(format).bytesPerTexel;
+    if (!scaleBias) {
+      for (int k = 0; k < 4; ++k) t[k] = rgba[k];
+    } else {
+      float c[4];
+      for (int k = 0; k < 4; ++k)
+        c[k] = static_cast<float>(rgba[k]) * (1.0f / 255.0f) * pm.scale[k] + pm.bias[k];
+      texture::storeTexel(format, c, t);
     }
-  }
+  });
   if (pm.mapColor) mapColorAsMesa(pm, ctx.pixelMaps, texImage);
   drawTexturedQuad(ctx, object.get(), nullptr, x, y, width, height, true);
 }
@@ -757,10 +773,8 @@ void copyDepthStencilPixels(Context& ctx, int srcX, int srcY, int width, int hei
   const RasterPosState& rp = ctx.rasterPos;
   const long long x = roundToInt(rp.position.x), y = roundToInt(rp.position.y);
   // The source cut to the buffer; wholly outside: nothing is drawn.
-  const long long rx0 = std::max<long long>(0, srcX), ry0 = std::max<long long>(0, srcY);
-  const long long rx1 = std::min<long long>(db.width(), static_cast<long long>(srcX) + width);
-  const long long ry1 = std::min<long long>(db.height(), static_cast<long long>(srcY) + height);
-  if (rx0 >= rx1 || ry0 >= ry1) return;
+  const CopySource source(srcX, srcY, width, height, db.width(), db.height());
+  if (source.empty()) return;
   width = std::min(width, texture::kMaxTextureSize);
   height = std::min(height, texture::kMaxTextureSize);
   // llvmpipe cannot render to a depth format, so Mesa never blits these: the
@@ -777,18 +791,11 @@ void copyDepthStencilPixels(Context& ctx, int srcX, int srcY, int width, int hei
   } catch (const std::bad_alloc&) {
     return ctx.recordError(GL_OUT_OF_MEMORY);
   }
-  for (long long sy = ry0; sy < ry1; ++sy) {
-    const int row = static_cast<int>(static_cast<long long>(srcY) + height - 1 - sy);
-    if (row < 0 || row >= height) continue;
-    for (long long sx = rx0; sx < rx1; ++sx) {
-      const int col = static_cast<int>(sx - srcX);
-      if (col >= width) break;
-      const size_t at = static_cast<size_t>(row) * width + col;
-      if (copyDepth) depth[at] = storedDepthAsFloat(db, db.get(static_cast<int>(sx), static_cast<int>(sy)));
-      if (copyStencil)
-        stencil[at] = static_cast<uint8_t>(db.getStencil(static_cast<int>(sx), static_cast<int>(sy)));
-    }
-  }
+  source.forEachPixel(width, height, [&](int sx, int sy, int row, int col) {
+    const size_t at = static_cast<size_t>(row) * width + col;
+    if (copyDepth) depth[at] = storedDepthAsFloat(db, db.get(sx, sy));
+    if (copyStencil) stencil[at] = static_cast<uint8_t>(db.getStencil(sx, sy));
+  });
   fragment::DepthImageState d;
   d.depth = copyDepth ? depth.data() : nullptr;
   d.stencil = copyStencil ? stencil.data() : nullptr;

@@ -41,4 +41,27 @@ class StencilContext {
   bool ok_ = false;
 };
 
+// The stencil value at (x, y) read back in every index type glReadPixels
+// takes (with the current pixel transfer).
+struct StencilInEveryType {
+  GLubyte ub = 0;
+  GLbyte b = 0;
+  GLushort us = 0;
+  GLshort s = 0;
+  GLuint ui = 0;
+  GLint i = 0;
+  GLfloat f = 0;
+};
+inline StencilInEveryType ReadStencilInEveryType(int x, int y) {
+  StencilInEveryType v;
+  glReadPixels(x, y, 1, 1, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, &v.ub);
+  glReadPixels(x, y, 1, 1, GL_STENCIL_INDEX, GL_BYTE, &v.b);
+  glReadPixels(x, y, 1, 1, GL_STENCIL_INDEX, GL_UNSIGNED_SHORT, &v.us);
+  glReadPixels(x, y, 1, 1, GL_STENCIL_INDEX, GL_SHORT, &v.s);
+  glReadPixels(x, y, 1, 1, GL_STENCIL_INDEX, GL_UNSIGNED_INT, &v.ui);
+  glReadPixels(x, y, 1, 1, GL_STENCIL_INDEX, GL_INT, &v.i);
+  glReadPixels(x, y, 1, 1, GL_STENCIL_INDEX, GL_FLOAT, &v.f);
+  return v;
+}
+
 }  // namespace glfx_test

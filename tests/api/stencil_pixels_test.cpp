@@ -608,28 +608,15 @@ TEST_F(StencilPixelsTest, ReadShiftsAndOffsetsOnThirtyTwoBitsKeepingEight) {
   for (const Case& k : cases) {
     glPixelTransferi(GL_INDEX_SHIFT, k.shift);
     glPixelTransferi(GL_INDEX_OFFSET, k.offset);
-    GLubyte ub = 0;
-    GLbyte b = 0;
-    GLushort us = 0;
-    GLshort s = 0;
-    GLuint ui = 0;
-    GLint i = 0;
-    GLfloat f = 0;
-    glReadPixels(0, 0, 1, 1, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, &ub);
-    glReadPixels(0, 0, 1, 1, GL_STENCIL_INDEX, GL_BYTE, &b);
-    glReadPixels(0, 0, 1, 1, GL_STENCIL_INDEX, GL_UNSIGNED_SHORT, &us);
-    glReadPixels(0, 0, 1, 1, GL_STENCIL_INDEX, GL_SHORT, &s);
-    glReadPixels(0, 0, 1, 1, GL_STENCIL_INDEX, GL_UNSIGNED_INT, &ui);
-    glReadPixels(0, 0, 1, 1, GL_STENCIL_INDEX, GL_INT, &i);
-    glReadPixels(0, 0, 1, 1, GL_STENCIL_INDEX, GL_FLOAT, &f);
+    const StencilInEveryType v = ReadStencilInEveryType(0, 0);
     EXPECT_NO_GL_ERROR();
-    EXPECT_EQ(ub, k.value) << k.shift << " " << k.offset;
-    EXPECT_EQ(b, k.value & 0x7f) << k.shift << " " << k.offset;  // GL_BYTE: 7 bits
-    EXPECT_EQ(us, k.value) << k.shift << " " << k.offset;
-    EXPECT_EQ(s, k.value) << k.shift << " " << k.offset;
-    EXPECT_EQ(ui, static_cast<GLuint>(k.value)) << k.shift << " " << k.offset;
-    EXPECT_EQ(i, k.value) << k.shift << " " << k.offset;
-    EXPECT_EQ(f, static_cast<GLfloat>(k.value)) << k.shift << " " << k.offset;
+    EXPECT_EQ(v.ub, k.value) << k.shift << " " << k.offset;
+    EXPECT_EQ(v.b, k.value & 0x7f) << k.shift << " " << k.offset;  // GL_BYTE: 7 bits
+    EXPECT_EQ(v.us, k.value) << k.shift << " " << k.offset;
+    EXPECT_EQ(v.s, k.value) << k.shift << " " << k.offset;
+    EXPECT_EQ(v.ui, static_cast<GLuint>(k.value)) << k.shift << " " << k.offset;
+    EXPECT_EQ(v.i, k.value) << k.shift << " " << k.offset;
+    EXPECT_EQ(v.f, static_cast<GLfloat>(k.value)) << k.shift << " " << k.offset;
   }
   // GL_DEPTH_STENCIL reads take the same stencil transfer.
   glClearDepth(0.5);

@@ -276,25 +276,15 @@ TEST_F(StencilTest, ReadPixelsTypes) {
   glClearStencil(0x81);
   glClearDepth(0.25);
   glClear(GL_STENCIL_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  GLushort us = 0;
-  GLuint ui = 0;
-  GLfloat f = 0;
-  GLbyte b = 0;
-  GLshort s = 0;
-  GLint i = 0;
-  glReadPixels(0, 0, 1, 1, GL_STENCIL_INDEX, GL_UNSIGNED_SHORT, &us);
-  glReadPixels(0, 0, 1, 1, GL_STENCIL_INDEX, GL_UNSIGNED_INT, &ui);
-  glReadPixels(0, 0, 1, 1, GL_STENCIL_INDEX, GL_FLOAT, &f);
-  glReadPixels(0, 0, 1, 1, GL_STENCIL_INDEX, GL_BYTE, &b);
-  glReadPixels(0, 0, 1, 1, GL_STENCIL_INDEX, GL_SHORT, &s);
-  glReadPixels(0, 0, 1, 1, GL_STENCIL_INDEX, GL_INT, &i);
+  const StencilInEveryType v = ReadStencilInEveryType(0, 0);
   EXPECT_NO_GL_ERROR();
-  EXPECT_EQ(us, 0x81);
-  EXPECT_EQ(ui, 0x81u);
-  EXPECT_EQ(f, 129.0f);
-  EXPECT_EQ(b, 1);  // Mesa keeps 7 bits for GL_BYTE
-  EXPECT_EQ(s, 129);
-  EXPECT_EQ(i, 129);
+  EXPECT_EQ(v.ub, 0x81);
+  EXPECT_EQ(v.us, 0x81);
+  EXPECT_EQ(v.ui, 0x81u);
+  EXPECT_EQ(v.f, 129.0f);
+  EXPECT_EQ(v.b, 1);  // Mesa keeps 7 bits for GL_BYTE
+  EXPECT_EQ(v.s, 129);
+  EXPECT_EQ(v.i, 129);
   GLuint ds = 0;
   glReadPixels(0, 0, 1, 1, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, &ds);
   EXPECT_NO_GL_ERROR();
@@ -306,11 +296,9 @@ TEST_F(StencilTest, ReadPixelsTypes) {
   // Index shift and offset apply, on 8-bit values.
   glPixelTransferi(GL_INDEX_SHIFT, 1);
   glPixelTransferi(GL_INDEX_OFFSET, 3);
-  GLubyte v = 0;
-  glReadPixels(0, 0, 1, 1, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, &v);
-  glReadPixels(0, 0, 1, 1, GL_STENCIL_INDEX, GL_UNSIGNED_SHORT, &us);
-  EXPECT_EQ(v, 5);
-  EXPECT_EQ(us, 5);
+  const StencilInEveryType shifted = ReadStencilInEveryType(0, 0);
+  EXPECT_EQ(shifted.ub, 5);
+  EXPECT_EQ(shifted.us, 5);
   glPixelTransferi(GL_INDEX_SHIFT, 0);
   glPixelTransferi(GL_INDEX_OFFSET, 0);
   // A block of values, rows bottom first.

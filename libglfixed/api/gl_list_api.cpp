@@ -101,6 +101,15 @@ GLAPI void APIENTRY glEndList(void) {
   // The new contents replace the list's old ones only now (§5.4).
   std::unique_ptr<pipeline::ListCompiler> compiler = std::move(ctx->displayLists.compiler);
   ctx->displayLists.install(compiler->name(), compiler->finish());
+  // A GL_COMPILE_AND_EXECUTE list that ends inside glBegin/glEnd leaves
+  // Mesa outside them, its unfinished primitive undrawn (a glEnd next is
+  // GL_INVALID_OPERATION); a glCallList of that list, by contrast, leaves the
+  // primitive open for the vertices that follow.
+  if (compiler->executes() && ctx->insideBeginEnd) {
+    ctx->batch.clearVertices();
+    ctx->insideBeginEnd = false;
+    pipeline::endPrimitive(*ctx);
+  }
 }
 
 // Allowed between glBegin and glEnd (§2.6.3).

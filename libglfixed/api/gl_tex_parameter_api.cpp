@@ -154,8 +154,13 @@ bool queriedValues(GLenum target, GLenum pname, GLfloat v[4], int& count, bool& 
 
 extern "C" {
 
+// While a list is compiled Mesa takes the scalar calls as glTexParameterfv
+// of (param, 0, 0, 0), the integer one converted to float, compiled and (in
+// GL_COMPILE_AND_EXECUTE) run so: a list may set GL_TEXTURE_BORDER_COLOR
+// through them, which outside a list is GL_INVALID_ENUM.
 GLAPI void APIENTRY glTexParameterf(GLenum target, GLenum pname, GLfloat param) {
-  if (api::compiled(&glTexParameterf, target, pname, param)) return;
+  const GLfloat asVector[4] = {param, 0, 0, 0};
+  if (api::listCompiler(api::context())) return glTexParameterfv(target, pname, asVector);
   if (takesFourValues(pname)) {  // a vector parameter through the scalar command
     if (Context* ctx = api::contextForSetter()) ctx->recordError(GL_INVALID_ENUM);
     return;
@@ -165,7 +170,8 @@ GLAPI void APIENTRY glTexParameterf(GLenum target, GLenum pname, GLfloat param) 
 }
 
 GLAPI void APIENTRY glTexParameteri(GLenum target, GLenum pname, GLint param) {
-  if (api::compiled(&glTexParameteri, target, pname, param)) return;
+  const GLfloat asVector[4] = {static_cast<GLfloat>(param), 0, 0, 0};
+  if (api::listCompiler(api::context())) return glTexParameterfv(target, pname, asVector);
   if (takesFourValues(pname)) {
     if (Context* ctx = api::contextForSetter()) ctx->recordError(GL_INVALID_ENUM);
     return;

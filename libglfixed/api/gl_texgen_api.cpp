@@ -41,9 +41,11 @@ bool modeAllowed(GLenum mode, int c) {
 }
 
 // The setter behind every glTexGen: `params` holds one value for
-// GL_TEXTURE_GEN_MODE, four for the planes. `vector`: a glTexGen*v call (the
-// scalar calls take GL_TEXTURE_GEN_MODE only, §2.11.4).
-void texGen(GLenum coord, GLenum pname, const float* params, bool vector) {
+// GL_TEXTURE_GEN_MODE, four for the planes. §2.11.4 gives the scalar calls
+// GL_TEXTURE_GEN_MODE only, but Mesa takes a plane from them too, as
+// (param, 0, 0, 0) without an error, as it (and this library) does for
+// glLightf and glFogf: the scalar calls pass that vector.
+void texGen(GLenum coord, GLenum pname, const float* params) {
   Context* ctx = api::contextForSetter();
   if (!ctx) return;
   const int c = coordIndex(coord);
@@ -57,12 +59,10 @@ void texGen(GLenum coord, GLenum pname, const float* params, bool vector) {
       return;
     }
     case GL_OBJECT_PLANE:
-      if (!vector) return ctx->recordError(GL_INVALID_ENUM);
       api::setState(*ctx, g.objectPlane, glm::vec4(params[0], params[1], params[2], params[3]),
                     GL_TEXTURE_BIT);
       return;
     case GL_EYE_PLANE: {
-      if (!vector) return ctx->recordError(GL_INVALID_ENUM);
       const glm::mat4 objectFromEye = vertex::analyseModelview(ctx->modelview.top()).inverse;
       const glm::vec4 plane =
           primitive::transformPlane(glm::vec4(params[0], params[1], params[2], params[3]), objectFromEye);
@@ -80,7 +80,7 @@ void texGenv(GLenum coord, GLenum pname, const T* params) {
   if (!params) return;
   float p[4] = {0, 0, 0, 0};
   for (int i = 0; i < valueCount(pname); ++i) p[i] = static_cast<float>(params[i]);
-  texGen(coord, pname, p, true);
+  texGen(coord, pname, p);
 }
 
 // glGetTexGen: the mode, or the plane as stored.
@@ -111,17 +111,17 @@ extern "C" {
 GLAPI void APIENTRY glTexGeni(GLenum coord, GLenum pname, GLint param) {
   if (api::compiled(&glTexGeni, coord, pname, param)) return;
   const float p[4] = {static_cast<float>(param), 0, 0, 0};
-  texGen(coord, pname, p, false);
+  texGen(coord, pname, p);
 }
 GLAPI void APIENTRY glTexGenf(GLenum coord, GLenum pname, GLfloat param) {
   if (api::compiled(&glTexGenf, coord, pname, param)) return;
   const float p[4] = {param, 0, 0, 0};
-  texGen(coord, pname, p, false);
+  texGen(coord, pname, p);
 }
 GLAPI void APIENTRY glTexGend(GLenum coord, GLenum pname, GLdouble param) {
   if (api::compiled(&glTexGend, coord, pname, param)) return;
   const float p[4] = {static_cast<float>(param), 0, 0, 0};
-  texGen(coord, pname, p, false);
+  texGen(coord, pname, p);
 }
 GLAPI void APIENTRY glTexGeniv(GLenum coord, GLenum pname, const GLint* params) {
   if (api::compiled(&glTexGeniv, coord, pname, api::copied(params, valueCount(pname)))) return;

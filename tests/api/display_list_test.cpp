@@ -600,5 +600,59 @@ TEST_F(DisplayListTest, HugeRangesDoNotHang) {
   EXPECT_NO_GL_ERROR();
 }
 
+// Mesa compiles glTexParameterf/i as glTexParameterfv of (param, 0, 0, 0), the
+// integer converted to float, and runs that form in GL_COMPILE_AND_EXECUTE:
+// the border colour can be set through the scalar calls in a list only.
+TEST_F(DisplayListTest, ScalarTexParameterIsCompiledAsItsVectorForm) {
+  glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, 0.5f);
+  EXPECT_GL_ERROR(GL_INVALID_ENUM);
+  glNewList(1, GL_COMPILE_AND_EXECUTE);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, 1);
+  EXPECT_NO_GL_ERROR();
+  glEndList();
+  GLfloat b[4];
+  glGetTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, b);
+  EXPECT_EQ(b[0], 1.0f);  // 1 as a float, not 1 / (2^31 - 1)
+  EXPECT_EQ(b[1], 0.0f);
+  glNewList(2, GL_COMPILE);
+  glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, 0.25f);
+  glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, static_cast<GLfloat>(GL_NEAREST));
+  glEndList();
+  EXPECT_NO_GL_ERROR();
+  glCallList(2);
+  EXPECT_NO_GL_ERROR();
+  glGetTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, b);
+  EXPECT_EQ(b[0], 0.25f);
+  GLint filter = 0;
+  glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, &filter);
+  EXPECT_EQ(filter, GL_NEAREST);
+}
+
+// A GL_COMPILE_AND_EXECUTE list that ends inside glBegin/glEnd leaves Mesa
+// outside them: a glEnd next is GL_INVALID_OPERATION;
+// glCallList of the same list leaves the primitive open for the vertices that
+// follow it. (What Mesa draws of the unfinished primitive is not asserted:
+// nothing at glFinish, the primitive after the erroneous glEnd.)
+TEST_F(DisplayListTest, EndListInsideBeginEndOfCompileAndExecute) {
+  glClearColor(0, 0, 0, 0);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glNewList(1, GL_COMPILE_AND_EXECUTE);
+  glBegin(GL_QUADS);
+  glColor3f(1, 0, 0);
+  glVertex2f(-1, -1);
+  glVertex2f(1, -1);
+  glVertex2f(1, 1);
+  glVertex2f(-1, 1);
+  glEndList();
+  glEnd();
+  EXPECT_GL_ERROR(GL_INVALID_OPERATION);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glCallList(1);
+  glEnd();
+  EXPECT_NO_GL_ERROR();
+  glFinish();
+  EXPECT_EQ(Pixel(kWidth / 2, kHeight / 2)[0], 255);
+}
+
 }  // namespace
 }  // namespace glfx_test

@@ -70,12 +70,26 @@ TEST_F(TexGenTest, Errors) {
   EXPECT_GL_ERROR(GL_INVALID_OPERATION);
 }
 
-TEST_F(TexGenTest, ScalarPlaneIsAnError) {
-  GLFX_SKIP_ON_MESA("Mesa takes glTexGenf(coord, GL_OBJECT_PLANE, x) as the plane (x, 0, 0, 0)");
+// Mesa takes a plane from the scalar calls as (param, 0, 0, 0), without an
+// error, as it does for glLightf(GL_POSITION) and glFogf(GL_FOG_COLOR).
+TEST_F(TexGenTest, ScalarPlaneIsTheValueThenZeros) {
+  glMatrixMode(GL_MODELVIEW);
+  glLoadIdentity();
   glTexGenf(GL_S, GL_OBJECT_PLANE, 2.0f);
-  EXPECT_GL_ERROR(GL_INVALID_ENUM);
-  glTexGeni(GL_S, GL_EYE_PLANE, 2);
-  EXPECT_GL_ERROR(GL_INVALID_ENUM);
+  EXPECT_GL_ERROR(GL_NO_ERROR);
+  glTexGeni(GL_T, GL_EYE_PLANE, 3);
+  glTexGend(GL_R, GL_OBJECT_PLANE, 0.25);
+  EXPECT_GL_ERROR(GL_NO_ERROR);
+  GLfloat s[4], t[4], r[4];
+  glGetTexGenfv(GL_S, GL_OBJECT_PLANE, s);
+  glGetTexGenfv(GL_T, GL_EYE_PLANE, t);
+  glGetTexGenfv(GL_R, GL_OBJECT_PLANE, r);
+  const GLfloat wantS[4] = {2, 0, 0, 0}, wantT[4] = {3, 0, 0, 0}, wantR[4] = {0.25f, 0, 0, 0};
+  for (int i = 0; i < 4; ++i) {
+    EXPECT_EQ(s[i], wantS[i]) << i;
+    EXPECT_EQ(t[i], wantT[i]) << i;
+    EXPECT_EQ(r[i], wantR[i]) << i;
+  }
 }
 
 TEST_F(TexGenTest, PlanesPerUnitAndEyePlaneThroughTheInverseModelview) {

@@ -147,6 +147,9 @@ GLAPI void APIENTRY glPixelStorei(GLenum pname, GLint param) {
     case GL_UNPACK_SWAP_BYTES:
       p.unpackSwapBytes = param != 0;
       return;
+    case GL_PACK_INVERT_MESA:
+      p.packInvert = static_cast<GLboolean>(param);
+      return;
     case GL_PACK_SWAP_BYTES: case GL_PACK_LSB_FIRST: case GL_UNPACK_LSB_FIRST:
       if (param != 0) ctx->recordError(GL_INVALID_OPERATION);  // not implemented
       return;

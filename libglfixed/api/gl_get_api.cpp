@@ -330,6 +330,7 @@ bool queryCoreState(Context& ctx, GLenum pname, StateValue& out) {
     case GL_PACK_IMAGE_HEIGHT: out.set({double(ctx.pixelStore.packImageHeight)}); return true;
     case GL_PACK_SKIP_IMAGES: out.set({double(ctx.pixelStore.packSkipImages)}); return true;
     case GL_UNPACK_SWAP_BYTES: out.set({double(ctx.pixelStore.unpackSwapBytes)}); return true;
+    case GL_PACK_INVERT_MESA: out.set({double(ctx.pixelStore.packInvert)}); return true;
     case GL_PACK_SWAP_BYTES: case GL_PACK_LSB_FIRST: case GL_UNPACK_LSB_FIRST: out.set({0.0}); return true;
     case GL_ATTRIB_STACK_DEPTH: out.set({double(ctx.attribStack.depth())}); return true;
     case GL_MAX_ATTRIB_STACK_DEPTH: out.set({double(kMaxAttribStackDepth)}); return true;

@@ -299,7 +299,7 @@ GLenum readPixels(const Framebuffer& fb, const PixelStoreAttrib& pack, GLint x, 
   inside(x, width, depth ? fb.depth.width() : fb.read.width, col0, col1);
   for (int row = row0; row < row1; ++row) {
     const int wy = y + row;
-    uint8_t* dstRow = base + row * rowBytes;
+    uint8_t* dstRow = base + (pack.packInvert ? height - 1 - row : row) * rowBytes;  // GL_MESA_pack_invert
     for (int col = col0; col < col1; ++col) {
       const int wx = x + col;
       uint8_t* dst = dstRow + static_cast<size_t>(col) * pixelBytes;

@@ -4,6 +4,10 @@
 
 #include <GL/gl.h>
 
+#ifndef GL_PACK_INVERT_MESA  // GL_MESA_pack_invert, which the system gl.h may lack
+#define GL_PACK_INVERT_MESA 0x8758
+#endif
+
 #include <array>
 #include <glm/glm.hpp>
 
@@ -119,6 +123,9 @@ struct PixelStoreAttrib {
   // Textures (3D images, byte order; texture/unpack.h reads them).
   GLint unpackImageHeight = 0, unpackSkipImages = 0, packImageHeight = 0, packSkipImages = 0;
   bool unpackSwapBytes = false;
+  // GL_MESA_pack_invert: packed images are written top row first. Mesa keeps
+  // the GLboolean as given (5 reads back 5).
+  GLboolean packInvert = GL_FALSE;
 };
 
 }  // namespace glfixed

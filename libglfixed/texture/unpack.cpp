@@ -254,8 +254,10 @@ ClientLayout unpackLayout(const PixelStoreAttrib& s, int width, int height, GLen
 }
 
 ClientLayout packLayout(const PixelStoreAttrib& s, int width, int height, GLenum format, GLenum type) {
-  return layoutOf(s.packAlignment, s.packRowLength, s.packSkipPixels, s.packSkipRows, s.packImageHeight,
-                  s.packSkipImages, false, width, height, format, type);
+  ClientLayout layout = layoutOf(s.packAlignment, s.packRowLength, s.packSkipPixels, s.packSkipRows,
+                                 s.packImageHeight, s.packSkipImages, false, width, height, format, type);
+  layout.invertRows = s.packInvert != GL_FALSE;
+  return layout;
 }
 
 void storeTexel(TexelFormat format, const float rgba[4], uint8_t* texel) {
@@ -406,7 +408,8 @@ void packImage(const TextureImage& image, const ClientLayout& layout, GLenum for
   const int bytes = elementBytes(type);
   for (int k = 0; k < image.depth; ++k) {
     for (int j = 0; j < image.height; ++j) {
-      uint8_t* row = pixels + layout.start + size_t(k) * layout.imageStride + size_t(j) * layout.rowStride;
+      const int clientRow = layout.invertRows ? image.height - 1 - j : j;
+      uint8_t* row = pixels + layout.start + size_t(k) * layout.imageStride + size_t(clientRow) * layout.rowStride;
       for (int i = 0; i < image.width; ++i) {
         float rgba[4];
         texelToRGBA(image.format, image.texel(i, j, k), rgba);

@@ -36,6 +36,7 @@ struct ClientLayout {
   bool bitmap = false;
   int skipBits = 0;  // GL_BITMAP: skip pixels within the first byte
   int rowPixels = 0;  // the row length, or the width
+  bool invertRows = false;  // GL_MESA_pack_invert: the image's top row is written first
   // Bytes from the start of the client memory to the end of the last pixel
   // of a width x height x depth image (0 for an empty image).
   size_t extent(int width, int height, int depth) const;

@@ -4,6 +4,10 @@
 
 #include "gl_test_fixture.h"
 
+#ifndef GL_PACK_INVERT_MESA
+#define GL_PACK_INVERT_MESA 0x8758
+#endif
+
 namespace glfx_test {
 namespace {
 
@@ -229,6 +233,40 @@ TEST_F(ClearReadTest, RowZeroIsTheBottomRow) {
     const unsigned char* row = pixels() + y * kWidth * 4;
     EXPECT_EQ(row[4 * 20], y < kHeight / 2 ? 255 : 0) << "client buffer row " << y;
   }
+}
+
+// GL_MESA_pack_invert: glReadPixels and glGetTexImage write the top row
+// first; the value is kept as given and saved by the client attribute stack.
+TEST_F(ClearReadTest, PackInvertWritesTheTopRowFirst) {
+  ASSERT_NE(std::string(reinterpret_cast<const char*>(glGetString(GL_EXTENSIONS))).find("GL_MESA_pack_invert "),
+            std::string::npos);
+  glClearColor(0, 0, 0, 0);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glColor4f(1, 1, 1, 1);
+  glRectf(-1, -1, 1, -1 + 2.0f / kHeight);  // row 0 only
+  glPixelStorei(GL_PACK_INVERT_MESA, 5);
+  GLint invert = 0;
+  glGetIntegerv(GL_PACK_INVERT_MESA, &invert);
+  EXPECT_EQ(invert, 5);
+  unsigned char rows[3][4] = {};
+  glReadPixels(0, 0, 1, 3, GL_RGBA, GL_UNSIGNED_BYTE, rows);
+  EXPECT_EQ(rows[0][0], 0);
+  EXPECT_EQ(rows[2][0], 255);  // window row 0, written last
+  const unsigned char texels[2][2][4] = {{{10, 0, 0, 255}, {10, 0, 0, 255}}, {{20, 0, 0, 255}, {20, 0, 0, 255}}};
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 2, 2, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels);
+  unsigned char image[2][2][4] = {};
+  glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, image);
+  EXPECT_EQ(image[0][0][0], 20);
+  EXPECT_EQ(image[1][0][0], 10);
+  glPushClientAttrib(GL_CLIENT_PIXEL_STORE_BIT);
+  glPixelStorei(GL_PACK_INVERT_MESA, 0);
+  glPopClientAttrib();
+  glGetIntegerv(GL_PACK_INVERT_MESA, &invert);
+  EXPECT_EQ(invert, 5);
+  glPixelStorei(GL_PACK_INVERT_MESA, 0);
+  glReadPixels(0, 0, 1, 3, GL_RGBA, GL_UNSIGNED_BYTE, rows);
+  EXPECT_EQ(rows[0][0], 255);
+  EXPECT_NO_GL_ERROR();
 }
 
 TEST_F(ClearReadTest, OSMesaYUpZeroFlipsTheClientBuffer) {

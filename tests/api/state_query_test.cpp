@@ -534,6 +534,7 @@ TEST_F(StateQueryTest, AdvertisedExtensionsHaveTheirCommands) {
       {"GL_EXT_packed_pixels", {}},
       {"GL_ARB_pixel_buffer_object", {}},
       {"GL_EXT_vertex_array_bgra", {}},
+      {"GL_MESA_pack_invert", {}},
       {"GL_EXT_pixel_buffer_object", {}},
       {"GL_EXT_texture", {}},
       {"GL_EXT_texture_edge_clamp", {}},

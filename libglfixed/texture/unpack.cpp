@@ -288,6 +288,50 @@ uint32_t clientColorIndex(const ClientLayout& layout, const uint8_t* pixels, GLe
   }
 }
 
+namespace {
+
+// Where each stored byte of an 8-bit texel comes from when GL_UNSIGNED_BYTE
+// components are stored with no pixel transfer: a client component, or 0 or
+// 255. The general path's float arithmetic gives the byte back unchanged
+// (rint(b / 255 * 255) = b), so the mapping is read off that path's own
+// rearrangement (toRGBA, rgbaToChannels) applied to marker values.
+struct ByteCopy {
+  static constexpr int kZero = -1, kOne = -2;
+  int source[4] = {kZero, kZero, kZero, kZero};
+  int channels = 0;
+};
+
+bool byteCopyOf(const TexelFormatInfo& info, GLenum format, ByteCopy& copy) {
+  if (info.bytesPerChannel != 1 || format == GL_COLOR_INDEX || format == GL_DEPTH_COMPONENT ||
+      format == GL_STENCIL_INDEX)
+    return false;
+  for (int i = 0; i < info.channels; ++i)
+    if (info.bits[i] != 8 && info.bits[i] != 0) return false;
+  const float markers[4] = {10, 20, 30, 40};
+  float rgba[4], channels[4];
+  toRGBA(format, markers, rgba);
+  rgbaToChannels(info.baseFormat, rgba, channels);
+  copy.channels = info.channels;
+  for (int i = 0; i < info.channels; ++i) {
+    const float m = channels[i];
+    if (info.bits[i] == 0 || m == 0.0f) copy.source[i] = ByteCopy::kZero;
+    else if (m == 1.0f) copy.source[i] = ByteCopy::kOne;
+    else copy.source[i] = static_cast<int>(m) / 10 - 1;
+  }
+  return true;
+}
+
+void copyBytes(const ByteCopy& copy, const uint8_t* in, size_t inStride, uint8_t* out, int width) {
+  const int n = copy.channels;
+  for (int i = 0; i < width; ++i, in += inStride, out += n)
+    for (int k = 0; k < n; ++k) {
+      const int src = copy.source[k];
+      out[k] = src >= 0 ? in[src] : src == ByteCopy::kOne ? 255 : 0;
+    }
+}
+
+}  // namespace
+
 void unpackImage(const ClientLayout& layout, const uint8_t* pixels, GLenum format, GLenum type,
                  const PixelModeAttrib& transfer, int width, int height, int depth, TextureImage& image,
                  int x, int y, int z, const PixelMaps* maps) {
@@ -296,6 +340,26 @@ void unpackImage(const ClientLayout& layout, const uint8_t* pixels, GLenum forma
   const bool mapColor = !isDepth && maps && transfer.mapColor;
   const bool scaleBias = isDepth ? (transfer.depthScale != 1 || transfer.depthBias != 0)
                                  : (transfer.scale != glm::vec4(1) || transfer.bias != glm::vec4(0) || mapColor);
+  ByteCopy copy;
+  if (type == GL_UNSIGNED_BYTE && !scaleBias && !layout.bitmap && byteCopyOf(info, format, copy)) {
+    const bool identity = copy.channels == componentsOf(format) && layout.groupBytes == size_t(copy.channels) &&
+                          [&] {
+                            for (int k = 0; k < copy.channels; ++k)
+                              if (copy.source[k] != k) return false;
+                            return true;
+                          }();
+    for (int k = 0; k < depth; ++k)
+      for (int j = 0; j < height; ++j) {
+        const uint8_t* row = pixels + layout.start + size_t(k) * layout.imageStride + size_t(j) * layout.rowStride;
+        uint8_t* out = image.texels.data() + size_t(z + k) * image.imageStride + size_t(y + j) * image.rowStride +
+                       size_t(x) * info.bytesPerTexel;
+        if (identity)
+          std::memcpy(out, row, size_t(width) * info.bytesPerTexel);
+        else
+          copyBytes(copy, row, layout.groupBytes, out, width);
+      }
+    return;
+  }
   const bool fromBytes = !scaleBias && (type == GL_UNSIGNED_BYTE || type == GL_UNSIGNED_INT_8_8_8_8 ||
                                         type == GL_UNSIGNED_INT_8_8_8_8_REV);
   const int components = componentsOf(format);

@@ -7,7 +7,9 @@
  * texels a pixel, so every pixel blends two levels), and the same quads
  * blended, SRC_ALPHA / ONE_MINUS_SRC_ALPHA with a diffuse alpha of 0.5
  * ("blendfill": every pixel reads the buffer), and the same quads in GL_EXP2
- * fog ("fogfill": each pixel's fog factor through llvmpipe's exp2). Built against Mesa's
+ * fog ("fogfill": each pixel's fog factor through llvmpipe's exp2), and a
+ * 1024x1024 RGBA texture uploaded by glTexImage2D every frame, then drawn on a
+ * small quad ("upload": streaming video frames or procedural textures). Built against Mesa's
  * headers; run on Mesa and on the drop-in by bench/run_bench.sh. Prints ms
  * per frame. */
 #define GL_GLEXT_PROTOTYPES 1
@@ -161,6 +163,19 @@ int main(int argc, char **argv) {
         glFogf(GL_FOG_DENSITY, 0.2f);
         glEnable(GL_FOG);
     }
+    const int upload = strcmp(what, "upload") == 0;
+    enum { kUploadSize = 1024 };
+    static unsigned char frame[kUploadSize * kUploadSize * 4];
+    if (upload) {
+        for (int i = 0; i < kUploadSize * kUploadSize * 4; i++) frame[i] = (unsigned char)(i * 7 + (i >> 12));
+        GLuint tex;
+        glGenTextures(1, &tex);
+        glBindTexture(GL_TEXTURE_2D, tex);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        glEnable(GL_TEXTURE_2D);
+        glDisable(GL_LIGHTING);
+    }
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     glFinish();
     double t1 = now();
@@ -180,6 +195,15 @@ int main(int argc, char **argv) {
                 }
                 glEnd();
             }
+        } else if (upload) {
+            frame[f % sizeof frame] ^= 0xff;  /* a new frame each time */
+            glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, kUploadSize, kUploadSize, 0, GL_RGBA, GL_UNSIGNED_BYTE, frame);
+            glBegin(GL_QUADS);  /* about 30x30 pixels */
+            glTexCoord2f(0, 0); glVertex3f(-0.15f, -0.15f, 1);
+            glTexCoord2f(1, 0); glVertex3f(0.15f, -0.15f, 1);
+            glTexCoord2f(1, 1); glVertex3f(0.15f, 0.15f, 1);
+            glTexCoord2f(0, 1); glVertex3f(-0.15f, 0.15f, 1);
+            glEnd();
         } else if (list) {
             glCallList(1);
         } else if (vbo) {

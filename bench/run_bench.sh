@@ -11,7 +11,8 @@ declare -A ms
 # texfill: the fill quads under a trilinear (GL_LINEAR_MIPMAP_LINEAR) texture
 # (issue 14). blendfill: the fill quads blended (SRC_ALPHA, ONE_MINUS_SRC_ALPHA).
 # fogfill: the fill quads in GL_EXP2 fog (a fog factor per pixel).
-for what in geometry list vbo fill texfill blendfill fogfill; do
+# upload: a 1024x1024 RGBA glTexImage2D each frame, drawn on a small quad.
+for what in geometry list vbo fill texfill blendfill fogfill upload; do
   mesa=$(env -u LD_LIBRARY_PATH "$exe" "$frames" "$what")
   ours=$(LD_LIBRARY_PATH="$build/dropin" "$exe" "$frames" "$what")
   echo "Mesa       $mesa"

@@ -144,7 +144,7 @@ void drawUnrasterized(const PrimitiveState& state, const ShadedVertices& vertice
   if (n == 0) return;
   Batch b{state, sink,
           ViewportTransform::make(state.viewportX, state.viewportY, state.viewportWidth, state.viewportHeight,
-                                  state.depthNear, state.depthFar, framebufferHeight),
+                                  state.depthNear, state.depthFar, framebufferHeight, state.flipViewportY),
           FaceRule{state.cullFace, state.cullFaceMode, state.frontFace}, vertices.hasBack};
 
   struct SiteClipVertices {};

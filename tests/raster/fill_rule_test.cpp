@@ -99,7 +99,7 @@ TEST(FillRule, SpanClippingMatchesPerPixelTests) {
     }
     if (fixedArea(t) <= 0) std::swap(t.x[0], t.x[1]), std::swap(t.y[0], t.y[1]);
     if (fixedArea(t) == 0) continue;
-    Edge e[3] = {Edge::make(t, 0), Edge::make(t, 1), Edge::make(t, 2)};
+    Edge e[3] = {Edge::make(t, 0, true), Edge::make(t, 1, true), Edge::make(t, 2, true)};
     for (int py = -25; py < 65; ++py) {
       int64_t lo = -30, hi = 70;
       for (const Edge& edge : e) clipSpanToEdge(edge, py, lo, hi);
@@ -122,7 +122,7 @@ TEST(FillRule, SteppedSpansMatchDividedSpans) {
     if (fixedArea(t) < 0) std::swap(t.x[0], t.x[1]), std::swap(t.y[0], t.y[1]);
     if (fixedArea(t) == 0) continue;
     for (int i = 0; i < 3; ++i) {
-      const Edge e = Edge::make(t, i);
+      const Edge e = Edge::make(t, i, true);
       EdgeSpanStepper stepper(e, -310);
       for (int py = -310; py < 310; ++py) {
         int64_t lo1 = -400, hi1 = 400, lo2 = -400, hi2 = 400;

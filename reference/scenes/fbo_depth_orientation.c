@@ -1,0 +1,251 @@
+/* Framebuffer objects are rasterized with y up: Mesa's state tracker flips y
+ * for window-system buffers only, so into an object llvmpipe snaps, applies
+ * its fill rule and rounds interpolants in GL's own rows. Two 64x64 objects,
+ * each with a DEPTH_COMPONENT24 renderbuffer: one RGBA8, one RGBA32F. Into
+ * each: a lit, culled torus and two tilted triangles in perspective (depth
+ * tested), triangles with edges exactly on pixel centres, lines, points of
+ * several sizes, point sprites with both coordinate origins, a stippled
+ * polygon, a glBitmap and a zoomed glDrawPixels. Their colour (bytes, or the
+ * float bits) and depth (GL_UNSIGNED_INT, the 24 bits as RGB bytes) are read
+ * back and drawn into the window side by side with glDrawPixels, where the
+ * harness compares them: every byte must equal Mesa's. */
+#include <string.h>
+
+#include "tex_common.h"
+
+enum { N = 64 };
+
+static void perspective_part(void)
+{
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glFrustum(-0.6, 0.6, -0.6, 0.6, 1.0, 12.0);
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+    tex_lights();
+    glEnable(GL_COLOR_MATERIAL);
+    glEnable(GL_CULL_FACE);
+    glPushMatrix();
+    glTranslatef(-0.3f, 0.25f, -5.0f);
+    glRotatef(55.0f, 1.0f, 0.0f, 0.0f);
+    glRotatef(25.0f, 0.0f, 1.0f, 0.0f);
+    glColor3f(0.95f, 0.6f, 0.2f);
+    tex_torus(1.1f, 0.35f, 20, 10);
+    glPopMatrix();
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_LIGHTING);
+    glDisable(GL_COLOR_MATERIAL);
+    /* Two tilted perspective triangles crossing each other. */
+    glShadeModel(GL_SMOOTH);
+    glBegin(GL_TRIANGLES);
+    glColor3f(0.9f, 0.2f, 0.3f);
+    glVertex3f(-1.5f, -1.3f, -2.5f);
+    glColor3f(0.2f, 0.9f, 0.3f);
+    glVertex3f(0.6f, -1.1f, -6.5f);
+    glColor3f(0.2f, 0.3f, 0.9f);
+    glVertex3f(-0.2f, 0.4f, -3.3f);
+    glColor3f(0.8f, 0.8f, 0.1f);
+    glVertex3f(1.4f, -1.5f, -3.1f);
+    glColor3f(0.1f, 0.8f, 0.8f);
+    glVertex3f(1.0f, 0.9f, -7.0f);
+    glColor3f(0.8f, 0.1f, 0.8f);
+    glVertex3f(-0.9f, -0.2f, -4.4f);
+    glEnd();
+}
+
+static void pixel_part(GLuint sprite_tex)
+{
+    static const GLubyte bitmap[8] = { 0x81, 0x42, 0x24, 0x18, 0x18, 0x24, 0x42, 0xff };
+    GLubyte image[6 * 5 * 4];
+    int i, j;
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glOrtho(0.0, N, 0.0, N, -1.0, 1.0);
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+    /* Edges exactly on pixel centres: horizontal bottom and top edges, a
+     * vertical edge, shared edges of a fan (GL's fill rule, bottom-left). */
+    glBegin(GL_TRIANGLES);
+    glColor3f(1.0f, 0.5f, 0.0f);
+    glVertex3f(2.5f, 2.5f, 0.2f);
+    glVertex3f(12.5f, 2.5f, -0.1f);
+    glVertex3f(7.5f, 9.5f, 0.3f);
+    glColor3f(0.0f, 0.6f, 1.0f);
+    glVertex3f(2.5f, 9.5f, 0.1f);
+    glVertex3f(7.5f, 9.5f, 0.1f);   /* top edge on a centre row, shared */
+    glVertex3f(4.5f, 14.5f, -0.2f);
+    glColor3f(0.6f, 1.0f, 0.2f);
+    glVertex3f(14.5f, 2.5f, 0.0f);
+    glVertex3f(14.5f, 12.5f, 0.5f);  /* vertical edge on a centre column */
+    glVertex3f(20.5f, 7.5f, -0.4f);
+    glEnd();
+    glBegin(GL_QUADS);
+    glColor3f(0.9f, 0.9f, 0.9f);
+    glVertex2f(22.5f, 2.5f);
+    glVertex2f(30.5f, 2.5f);
+    glVertex2f(30.5f, 6.5f);
+    glVertex2f(22.5f, 6.5f);
+    glEnd();
+    /* Lines: horizontal and vertical on centres, diagonals, wide ones. */
+    glBegin(GL_LINES);
+    glColor3f(1.0f, 1.0f, 0.0f);
+    glVertex2f(33.5f, 2.5f);
+    glVertex2f(45.5f, 2.5f);
+    glVertex2f(33.5f, 4.0f);
+    glVertex2f(45.5f, 4.0f);
+    glVertex2f(47.5f, 2.5f);
+    glVertex2f(47.5f, 14.5f);
+    glColor3f(0.0f, 1.0f, 1.0f);
+    glVertex2f(33.0f, 6.0f);
+    glVertex2f(45.0f, 14.0f);
+    glVertex2f(33.5f, 14.5f);
+    glVertex2f(44.5f, 7.5f);
+    glVertex3f(50.2f, 3.3f, -0.5f);
+    glVertex3f(62.7f, 13.1f, 0.5f);
+    glEnd();
+    glLineWidth(3.0f);
+    glBegin(GL_LINE_STRIP);
+    glColor3f(1.0f, 0.3f, 0.6f);
+    glVertex2f(50.5f, 16.5f);
+    glVertex2f(62.5f, 16.5f);
+    glVertex2f(56.0f, 22.0f);
+    glEnd();
+    glLineWidth(1.0f);
+    /* Points of sizes 1 to 4, on centres and on edges between pixels. */
+    for (i = 1; i <= 4; i++) {
+        glPointSize((float)i);
+        glBegin(GL_POINTS);
+        glColor3f(0.3f * i, 1.0f - 0.2f * i, 0.5f);
+        glVertex2f(4.5f + 8.0f * i, 20.5f);
+        glVertex2f(5.0f + 8.0f * i, 26.0f);
+        glVertex3f(4.25f + 8.0f * i, 31.75f, 0.3f);
+        glEnd();
+    }
+    /* Point sprites: the coordinate origin is window-relative. */
+    glBindTexture(GL_TEXTURE_2D, sprite_tex);
+    glEnable(GL_TEXTURE_2D);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+    glEnable(GL_POINT_SPRITE);
+    glTexEnvi(GL_POINT_SPRITE, GL_COORD_REPLACE, GL_TRUE);
+    glPointSize(8.0f);
+    glPointParameteri(GL_POINT_SPRITE_COORD_ORIGIN, GL_UPPER_LEFT);
+    glBegin(GL_POINTS);
+    glVertex2f(44.0f, 28.0f);
+    glVertex2f(54.3f, 27.6f);
+    glEnd();
+    glPointParameteri(GL_POINT_SPRITE_COORD_ORIGIN, GL_LOWER_LEFT);
+    glBegin(GL_POINTS);
+    glVertex2f(44.0f, 38.0f);
+    glVertex2f(54.5f, 38.5f);
+    glEnd();
+    glDisable(GL_POINT_SPRITE);
+    glDisable(GL_TEXTURE_2D);
+    glPointSize(1.0f);
+    /* A stippled polygon: the pattern is window-relative. */
+    {
+        GLubyte pattern[128];
+        for (i = 0; i < 128; i++)
+            pattern[i] = (GLubyte)((i / 4) % 3 == 0 ? 0xf0 : (i % 5 == 0 ? 0x3c : 0x81));
+        glPolygonStipple(pattern);
+        glEnable(GL_POLYGON_STIPPLE);
+        glBegin(GL_TRIANGLES);
+        glColor3f(0.7f, 0.2f, 1.0f);
+        glVertex2f(3.0f, 36.0f);
+        glVertex2f(30.0f, 38.0f);
+        glVertex2f(12.0f, 60.0f);
+        glEnd();
+        glDisable(GL_POLYGON_STIPPLE);
+    }
+    /* glBitmap and a zoomed glDrawPixels. */
+    glColor3f(1.0f, 1.0f, 1.0f);
+    glRasterPos3f(33.0f, 44.0f, 0.2f);
+    glBitmap(8, 8, 0.0f, 0.0f, 10.0f, 1.0f, bitmap);
+    glBitmap(8, 8, 0.0f, 0.0f, 10.0f, 1.0f, bitmap);
+    for (j = 0; j < 5; j++)
+        for (i = 0; i < 6; i++)
+            tex_put(&image[(j * 6 + i) * 4], 40 * i, 50 * j, 255 - 30 * i - 20 * j, 255);
+    glRasterPos2i(34, 53);
+    glPixelZoom(1.5f, 1.75f);
+    glDrawPixels(6, 5, GL_RGBA, GL_UNSIGNED_BYTE, image);
+    glPixelZoom(1.0f, 1.0f);
+}
+
+/* Renders the scene into a new 64x64 object of colour `format` and reads it
+ * back: the colour as `type` into `color`, the depth as GL_UNSIGNED_INT. */
+static void render_object(GLenum format, GLenum type, void *color, GLuint *depth_values, GLuint sprite_tex)
+{
+    GLuint fb, rb[2];
+    glGenRenderbuffers(2, rb);
+    glBindRenderbuffer(GL_RENDERBUFFER, rb[0]);
+    glRenderbufferStorage(GL_RENDERBUFFER, format, N, N);
+    glBindRenderbuffer(GL_RENDERBUFFER, rb[1]);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, N, N);
+    glGenFramebuffers(1, &fb);
+    glBindFramebuffer(GL_FRAMEBUFFER, fb);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, rb[0]);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, rb[1]);
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE) {
+        glViewport(0, 0, N, N);
+        glClearColor(0.1f, 0.15f, 0.3f, 1.0f);
+        glClearDepth(1.0);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        glEnable(GL_DEPTH_TEST);
+        perspective_part();
+        pixel_part(sprite_tex);
+        glDisable(GL_DEPTH_TEST);
+        glReadPixels(0, 0, N, N, GL_RGBA, type, color);
+        glReadPixels(0, 0, N, N, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, depth_values);
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glDeleteFramebuffers(1, &fb);
+    glDeleteRenderbuffers(2, rb);
+}
+
+/* The 24 depth bits of each value as R, G, B bytes (alpha 255). */
+static void depth_as_bytes(const GLuint *depth_values, GLubyte *out)
+{
+    int i;
+    for (i = 0; i < N * N; i++) {
+        GLuint d = depth_values[i] >> 8;
+        tex_put(&out[i * 4], (int)(d >> 16) & 255, (int)(d >> 8) & 255, (int)d & 255, 255);
+    }
+}
+
+static void put_image(int x, int w, const void *pixels)
+{
+    glWindowPos2i(x, 0);
+    glDrawPixels(w, N, GL_RGBA, GL_UNSIGNED_BYTE, pixels);
+}
+
+int main(int argc, char **argv)
+{
+    static GLubyte bytes[N * N * 4], depth_bytes[N * N * 4];
+    static GLfloat floats[N * N * 4];
+    static GLuint depth_values[N * N];
+    GLubyte sprite[4 * 4 * 4];
+    GLuint sprite_tex;
+    int i;
+    scene_begin(argc, argv, 7 * N, N);
+    sprite_tex = tex_new(GL_TEXTURE_2D, GL_NEAREST, GL_NEAREST, GL_CLAMP_TO_EDGE);
+    for (i = 0; i < 16; i++)
+        tex_put(&sprite[i * 4], (i % 4) * 80, (i / 4) * 80, ((i + i / 4) & 1) ? 255 : 40, 255);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 4, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, sprite);
+    glBindTexture(GL_TEXTURE_2D, 0);
+
+    render_object(GL_RGBA8, GL_UNSIGNED_BYTE, bytes, depth_values, sprite_tex);
+    depth_as_bytes(depth_values, depth_bytes);
+    glViewport(0, 0, 7 * N, N);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    put_image(0, N, bytes);
+    put_image(N, N, depth_bytes);
+
+    render_object(GL_RGBA32F, GL_FLOAT, floats, depth_values, sprite_tex);
+    depth_as_bytes(depth_values, depth_bytes);
+    /* Each float pixel's 16 bytes as 4 window pixels: 4N bytes-pixels a row. */
+    glViewport(0, 0, 7 * N, N);
+    put_image(2 * N, 4 * N, floats);
+    put_image(6 * N, N, depth_bytes);
+    glDeleteTextures(1, &sprite_tex);
+    scene_readpixels_check();
+    return scene_end();
+}

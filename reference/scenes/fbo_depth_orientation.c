@@ -5,7 +5,9 @@
  * each: a lit, culled torus and two tilted triangles in perspective (depth
  * tested), triangles with edges exactly on pixel centres, lines, points of
  * several sizes, point sprites with both coordinate origins, a stippled
- * polygon, a glBitmap and a zoomed glDrawPixels. Their colour (bytes, or the
+ * polygon, a glBitmap and a zoomed glDrawPixels; into a third RGBA8 one smooth
+ * lines and points, a scissored triangle, polygon offset, two-sided lighting,
+ * glCopyPixels and a depth glDrawPixels. Their colour (bytes, or the
  * float bits) and depth (GL_UNSIGNED_INT, the 24 bits as RGB bytes) are read
  * back and drawn into the window side by side with glDrawPixels, where the
  * harness compares them: every byte must equal Mesa's. */
@@ -170,9 +172,111 @@ static void pixel_part(GLuint sprite_tex)
     glPixelZoom(1.0f, 1.0f);
 }
 
+/* The rest, into a third object: smooth (blended) lines and points, a
+ * scissored draw, polygon offset, two-sided lighting, glCopyPixels (the blit
+ * path and a zoomed one) and a depth glDrawPixels. */
+static void extra_part(void)
+{
+    GLfloat depth_image[8 * 6];
+    int i;
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glFrustum(-0.6, 0.6, -0.6, 0.6, 1.0, 12.0);
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+    glEnable(GL_LIGHTING);
+    glEnable(GL_LIGHT0);
+    glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_TRUE);
+    glEnable(GL_COLOR_MATERIAL);
+    glColor3f(0.3f, 0.8f, 0.5f);
+    glBegin(GL_QUADS);  /* seen from behind at the top: the back material */
+    glNormal3f(0.0f, 0.3f, 1.0f);
+    glVertex3f(-1.4f, 0.3f, -3.0f);
+    glVertex3f(-1.2f, 1.3f, -4.5f);
+    glVertex3f(1.3f, 1.2f, -5.0f);
+    glVertex3f(1.1f, 0.2f, -3.3f);
+    glEnd();
+    glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_FALSE);
+    glDisable(GL_COLOR_MATERIAL);
+    glDisable(GL_LIGHTING);
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(1.5f, 3.0f);
+    glBegin(GL_TRIANGLES);
+    glColor3f(0.9f, 0.4f, 0.1f);
+    glVertex3f(-1.0f, -0.2f, -2.8f);
+    glColor3f(0.1f, 0.4f, 0.9f);
+    glVertex3f(0.9f, 0.1f, -6.0f);
+    glColor3f(0.5f, 0.9f, 0.4f);
+    glVertex3f(0.0f, 1.0f, -3.9f);
+    glEnd();
+    glDisable(GL_POLYGON_OFFSET_FILL);
+
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glOrtho(0.0, N, 0.0, N, -1.0, 1.0);
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    glEnable(GL_LINE_SMOOTH);
+    glLineWidth(2.0f);
+    glBegin(GL_LINES);
+    glColor3f(1.0f, 1.0f, 0.6f);
+    glVertex2f(2.3f, 3.1f);
+    glVertex2f(30.6f, 17.4f);
+    glVertex2f(3.5f, 20.5f);
+    glVertex2f(28.5f, 20.5f);
+    glEnd();
+    glDisable(GL_LINE_SMOOTH);
+    glLineWidth(1.0f);
+    glEnable(GL_POINT_SMOOTH);
+    glPointSize(5.0f);
+    glBegin(GL_POINTS);
+    glColor3f(0.4f, 1.0f, 1.0f);
+    glVertex2f(36.3f, 6.6f);
+    glVertex2f(44.5f, 6.5f);
+    glVertex2f(52.0f, 7.0f);
+    glEnd();
+    glDisable(GL_POINT_SMOOTH);
+    glPointSize(1.0f);
+    glDisable(GL_BLEND);
+    /* Scissored: only [34, 60) x [12, 30) of the triangle. */
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(34, 12, 26, 18);
+    glBegin(GL_TRIANGLES);
+    glColor3f(1.0f, 0.2f, 0.6f);
+    glVertex2f(30.0f, 10.0f);
+    glColor3f(0.2f, 0.2f, 1.0f);
+    glVertex2f(63.0f, 14.0f);
+    glColor3f(1.0f, 1.0f, 0.2f);
+    glVertex2f(45.0f, 33.0f);
+    glEnd();
+    glDisable(GL_SCISSOR_TEST);
+    /* glCopyPixels within the object, as it is and zoomed. */
+    glDisable(GL_DEPTH_TEST);
+    glRasterPos2i(2, 34);
+    glCopyPixels(36, 12, 14, 10, GL_COLOR);
+    glRasterPos2i(18, 34);
+    glPixelZoom(1.5f, 2.0f);
+    glCopyPixels(0, 0, 10, 12, GL_COLOR);
+    glPixelZoom(1.0f, 1.0f);
+    /* A depth image drawn with GL_ALWAYS. */
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_ALWAYS);
+    for (i = 0; i < 8 * 6; i++)
+        depth_image[i] = 0.1f + 0.015f * (float)i;
+    glColor3f(0.6f, 0.6f, 0.6f);
+    glRasterPos3f(44.0f, 40.0f, 0.0f);
+    glPixelZoom(2.0f, 1.5f);
+    glDrawPixels(8, 6, GL_DEPTH_COMPONENT, GL_FLOAT, depth_image);
+    glPixelZoom(1.0f, 1.0f);
+    glDepthFunc(GL_LESS);
+}
+
 /* Renders the scene into a new 64x64 object of colour `format` and reads it
  * back: the colour as `type` into `color`, the depth as GL_UNSIGNED_INT. */
-static void render_object(GLenum format, GLenum type, void *color, GLuint *depth_values, GLuint sprite_tex)
+static void render_object(GLenum format, GLenum type, void *color, GLuint *depth_values, GLuint sprite_tex,
+                          int extra)
 {
     GLuint fb, rb[2];
     glGenRenderbuffers(2, rb);
@@ -190,8 +294,12 @@ static void render_object(GLenum format, GLenum type, void *color, GLuint *depth
         glClearDepth(1.0);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
         glEnable(GL_DEPTH_TEST);
-        perspective_part();
-        pixel_part(sprite_tex);
+        if (extra) {
+            extra_part();
+        } else {
+            perspective_part();
+            pixel_part(sprite_tex);
+        }
         glDisable(GL_DEPTH_TEST);
         glReadPixels(0, 0, N, N, GL_RGBA, type, color);
         glReadPixels(0, 0, N, N, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, depth_values);
@@ -225,26 +333,32 @@ int main(int argc, char **argv)
     GLubyte sprite[4 * 4 * 4];
     GLuint sprite_tex;
     int i;
-    scene_begin(argc, argv, 7 * N, N);
+    scene_begin(argc, argv, 9 * N, N);
     sprite_tex = tex_new(GL_TEXTURE_2D, GL_NEAREST, GL_NEAREST, GL_CLAMP_TO_EDGE);
     for (i = 0; i < 16; i++)
         tex_put(&sprite[i * 4], (i % 4) * 80, (i / 4) * 80, ((i + i / 4) & 1) ? 255 : 40, 255);
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 4, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, sprite);
     glBindTexture(GL_TEXTURE_2D, 0);
 
-    render_object(GL_RGBA8, GL_UNSIGNED_BYTE, bytes, depth_values, sprite_tex);
+    render_object(GL_RGBA8, GL_UNSIGNED_BYTE, bytes, depth_values, sprite_tex, 0);
     depth_as_bytes(depth_values, depth_bytes);
-    glViewport(0, 0, 7 * N, N);
+    glViewport(0, 0, 9 * N, N);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     put_image(0, N, bytes);
     put_image(N, N, depth_bytes);
 
-    render_object(GL_RGBA32F, GL_FLOAT, floats, depth_values, sprite_tex);
+    render_object(GL_RGBA32F, GL_FLOAT, floats, depth_values, sprite_tex, 0);
     depth_as_bytes(depth_values, depth_bytes);
     /* Each float pixel's 16 bytes as 4 window pixels: 4N bytes-pixels a row. */
-    glViewport(0, 0, 7 * N, N);
+    glViewport(0, 0, 9 * N, N);
     put_image(2 * N, 4 * N, floats);
     put_image(6 * N, N, depth_bytes);
+
+    render_object(GL_RGBA8, GL_UNSIGNED_BYTE, bytes, depth_values, sprite_tex, 1);
+    depth_as_bytes(depth_values, depth_bytes);
+    glViewport(0, 0, 9 * N, N);
+    put_image(7 * N, N, bytes);
+    put_image(8 * N, N, depth_bytes);
     glDeleteTextures(1, &sprite_tex);
     scene_readpixels_check();
     return scene_end();

@@ -79,7 +79,7 @@ bool setupPoint(const RasterState& state, const Framebuffer& fb, const WindowVer
   }
   if (!state.pointSprite) bx1 = bx + width - 1, by1 = by + width - 1;
   // The region cut to the buffer, GL window space (y up), in llvmpipe rows
-  // (y down).
+  // (Framebuffer::rowsUp).
   const WindowRegion& region = state.pointLineRegion;
   const int64_t rx0 = std::max({bx, int64_t(region.x0), int64_t(0)}),
                 rx1 = std::min({bx1, int64_t(region.x1) - 1, int64_t(fb.width()) - 1});

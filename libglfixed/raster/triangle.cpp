@@ -1,6 +1,7 @@
 // Triangle set-up: snapping, bounding box, edges, attribute planes and
-// polygon offset, in llvmpipe's y-down window space (see raster.h); the
-// fragments are shaded by the fragment stage (fragment/shade.h).
+// polygon offset, in llvmpipe's window space (y down, or up in a framebuffer
+// object: see raster.h); the fragments are shaded by the fragment stage
+// (fragment/shade.h).
 // Every float operation here must round exactly as llvmpipe's does: forbid
 // contracting a * b + c into a fused multiply-add (GCC contracts by default
 // in C++ whenever the target has FMA).

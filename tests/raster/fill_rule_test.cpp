@@ -111,6 +111,38 @@ TEST(FillRule, SpanClippingMatchesPerPixelTests) {
   }
 }
 
+// A framebuffer object's rows are GL's (y up), where llvmpipe runs without
+// its bottom_edge_rule (the top-left rule): the pixels a triangle covers there
+// are the mirror image of those its mirror image covers with the rule in the
+// y-down rows, so GL's bottom-left rule holds in both.
+TEST(FillRule, TopLeftRuleInRowsUpMirrorsTheBottomEdgeRule) {
+  std::mt19937 rng(17);
+  std::uniform_int_distribution<int32_t> coord(-10, 40);
+  std::uniform_int_distribution<int32_t> fraction(0, 255);
+  for (int iter = 0; iter < 1000; ++iter) {
+    FixedTriangle down;
+    for (int i = 0; i < 3; ++i) {
+      // Mostly on pixel centres, so that the rule decides many pixels.
+      down.x[i] = coord(rng) * 256 + (iter % 2 ? 0 : fraction(rng));
+      down.y[i] = coord(rng) * 256 + (iter % 3 ? 0 : fraction(rng));
+    }
+    if (iter % 4 == 0) down.y[1] = down.y[0];  // a horizontal edge
+    if (fixedArea(down) < 0) std::swap(down.x[0], down.x[1]), std::swap(down.y[0], down.y[1]);
+    if (fixedArea(down) == 0) continue;
+    // y -> -y reverses the winding: swap two vertices to keep the area positive.
+    FixedTriangle up = {{down.x[1], down.x[0], down.x[2]}, {-down.y[1], -down.y[0], -down.y[2]}};
+    ASSERT_GT(fixedArea(up), 0);
+    Edge d[3], u[3];
+    for (int i = 0; i < 3; ++i) d[i] = Edge::make(down, i, true), u[i] = Edge::make(up, i, false);
+    for (int py = -12; py <= 42; ++py)
+      for (int px = -12; px <= 42; ++px) {
+        const bool inDown = d[0].inside(px, py) && d[1].inside(px, py) && d[2].inside(px, py);
+        const bool inUp = u[0].inside(px, -py) && u[1].inside(px, -py) && u[2].inside(px, -py);
+        ASSERT_EQ(inDown, inUp) << "iteration " << iter << " pixel " << px << "," << py;
+      }
+  }
+}
+
 TEST(FillRule, SteppedSpansMatchDividedSpans) {
   std::mt19937 rng(13);
   std::uniform_int_distribution<int32_t> coord(-300 * 256, 300 * 256);

@@ -7,7 +7,9 @@
  * several sizes, point sprites with both coordinate origins, a stippled
  * polygon, a glBitmap and a zoomed glDrawPixels; into a third RGBA8 one smooth
  * lines and points, a scissored triangle, polygon offset, two-sided lighting,
- * glCopyPixels and a depth glDrawPixels. Their colour (bytes, or the
+ * glCopyPixels and a depth glDrawPixels; into a fourth polygon modes, line
+ * stipple, textured bitmaps, negative pixel zooms and a scissored wide point.
+ * Their colour (bytes, or the
  * float bits) and depth (GL_UNSIGNED_INT, the 24 bits as RGB bytes) are read
  * back and drawn into the window side by side with glDrawPixels, where the
  * harness compares them: every byte must equal Mesa's. */
@@ -273,6 +275,82 @@ static void extra_part(void)
     glDepthFunc(GL_LESS);
 }
 
+/* A fourth object: glPolygonMode lines and points (front and back),
+ * stippled lines, a textured glBitmap, glDrawPixels and glCopyPixels with
+ * negative zooms, and a selection of the object's rows by the scissor. */
+static void more_part(GLuint sprite_tex)
+{
+    static const GLubyte bitmap[16] = { 0xff, 0x80, 0xc1, 0x80, 0xa2, 0x80, 0x94, 0x80,
+                                        0x88, 0x80, 0x94, 0x80, 0xa2, 0x80, 0xff, 0x80 };
+    GLubyte image[5 * 4 * 4];
+    int i;
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glOrtho(0.0, N, 0.0, N, -1.0, 1.0);
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+    glPolygonMode(GL_FRONT, GL_LINE);
+    glPolygonMode(GL_BACK, GL_POINT);
+    glBegin(GL_TRIANGLES);
+    glColor3f(1.0f, 0.6f, 0.2f);
+    glVertex2f(3.5f, 3.5f);
+    glVertex2f(25.5f, 6.5f);
+    glVertex2f(10.5f, 24.5f);
+    glColor3f(0.2f, 0.9f, 1.0f);
+    glVertex2f(30.5f, 4.5f);
+    glVertex2f(38.0f, 24.0f);
+    glVertex2f(58.5f, 8.5f);
+    glEnd();
+    glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+    glEnable(GL_LINE_STIPPLE);
+    glLineStipple(2, 0x33f1);
+    glBegin(GL_LINE_STRIP);
+    glColor3f(0.9f, 0.9f, 0.3f);
+    glVertex2f(2.5f, 30.5f);
+    glVertex2f(60.5f, 28.5f);
+    glVertex2f(40.5f, 40.0f);
+    glEnd();
+    glDisable(GL_LINE_STIPPLE);
+    /* A textured bitmap: the current texture coordinates, the sprite texture. */
+    glBindTexture(GL_TEXTURE_2D, sprite_tex);
+    glEnable(GL_TEXTURE_2D);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
+    glColor3f(1.0f, 1.0f, 1.0f);
+    glTexCoord2f(0.3f, 0.8f);
+    glRasterPos2i(4, 44);
+    glBitmap(9, 8, 0.0f, 0.0f, 12.0f, 0.0f, bitmap);
+    glTexCoord2f(0.9f, 0.1f);
+    glRasterPos2i(16, 44);
+    glBitmap(9, 8, 0.0f, 0.0f, 12.0f, 0.0f, bitmap);
+    /* Drawn now: Mesa 22.3.6 crashes flushing its bitmap cache after the
+     * texture is disabled and unbound (MESA_FACTS.md "Pixel rectangles"). */
+    glFlush();
+    glDisable(GL_TEXTURE_2D);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    /* Negative zooms. */
+    for (i = 0; i < 20; i++)
+        tex_put(&image[i * 4], 60 * (i % 5), 80 * (i / 5), 200 - 9 * i, 255);
+    glDisable(GL_DEPTH_TEST);
+    glRasterPos2i(40, 60);
+    glPixelZoom(1.5f, -2.0f);
+    glDrawPixels(5, 4, GL_RGBA, GL_UNSIGNED_BYTE, image);
+    glRasterPos2i(62, 42);
+    glPixelZoom(-1.0f, 1.5f);
+    glCopyPixels(30, 4, 12, 8, GL_COLOR);
+    glPixelZoom(1.0f, 1.0f);
+    /* The scissor box cuts a wide point and a triangle. */
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(30, 50, 9, 7);
+    glPointSize(12.0f);
+    glBegin(GL_POINTS);
+    glColor3f(1.0f, 0.3f, 0.3f);
+    glVertex2f(32.0f, 52.0f);
+    glEnd();
+    glPointSize(1.0f);
+    glDisable(GL_SCISSOR_TEST);
+    glEnable(GL_DEPTH_TEST);
+}
+
 /* Renders the scene into a new 64x64 object of colour `format` and reads it
  * back: the colour as `type` into `color`, the depth as GL_UNSIGNED_INT. */
 static void render_object(GLenum format, GLenum type, void *color, GLuint *depth_values, GLuint sprite_tex,
@@ -294,7 +372,9 @@ static void render_object(GLenum format, GLenum type, void *color, GLuint *depth
         glClearDepth(1.0);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
         glEnable(GL_DEPTH_TEST);
-        if (extra) {
+        if (extra == 2) {
+            more_part(sprite_tex);
+        } else if (extra) {
             extra_part();
         } else {
             perspective_part();
@@ -333,7 +413,7 @@ int main(int argc, char **argv)
     GLubyte sprite[4 * 4 * 4];
     GLuint sprite_tex;
     int i;
-    scene_begin(argc, argv, 9 * N, N);
+    scene_begin(argc, argv, 10 * N, N);
     sprite_tex = tex_new(GL_TEXTURE_2D, GL_NEAREST, GL_NEAREST, GL_CLAMP_TO_EDGE);
     for (i = 0; i < 16; i++)
         tex_put(&sprite[i * 4], (i % 4) * 80, (i / 4) * 80, ((i + i / 4) & 1) ? 255 : 40, 255);
@@ -342,7 +422,7 @@ int main(int argc, char **argv)
 
     render_object(GL_RGBA8, GL_UNSIGNED_BYTE, bytes, depth_values, sprite_tex, 0);
     depth_as_bytes(depth_values, depth_bytes);
-    glViewport(0, 0, 9 * N, N);
+    glViewport(0, 0, 10 * N, N);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     put_image(0, N, bytes);
     put_image(N, N, depth_bytes);
@@ -350,15 +430,19 @@ int main(int argc, char **argv)
     render_object(GL_RGBA32F, GL_FLOAT, floats, depth_values, sprite_tex, 0);
     depth_as_bytes(depth_values, depth_bytes);
     /* Each float pixel's 16 bytes as 4 window pixels: 4N bytes-pixels a row. */
-    glViewport(0, 0, 9 * N, N);
+    glViewport(0, 0, 10 * N, N);
     put_image(2 * N, 4 * N, floats);
     put_image(6 * N, N, depth_bytes);
 
     render_object(GL_RGBA8, GL_UNSIGNED_BYTE, bytes, depth_values, sprite_tex, 1);
     depth_as_bytes(depth_values, depth_bytes);
-    glViewport(0, 0, 9 * N, N);
+    glViewport(0, 0, 10 * N, N);
     put_image(7 * N, N, bytes);
     put_image(8 * N, N, depth_bytes);
+
+    render_object(GL_RGBA8, GL_UNSIGNED_BYTE, bytes, depth_values, sprite_tex, 2);
+    glViewport(0, 0, 10 * N, N);
+    put_image(9 * N, N, bytes);
     glDeleteTextures(1, &sprite_tex);
     scene_readpixels_check();
     return scene_end();

@@ -3,7 +3,7 @@
 // lanes of AVX2; its texture sampler takes level-of-detail differences
 // within each quad).
 //
-// Lane order, in llvmpipe's y-down window space (raster/raster.h): lane i is
+// Lane order, in llvmpipe's window space (raster/raster.h): lane i is
 // quad i / 4; inside a quad, i % 4 is 0 top-left, 1 top-right, 2 bottom-left,
 // 3 bottom-right. A block whose top-left pixel is (x, y), x a multiple of 4
 // and y even, holds pixel (x + 2 * (i / 4) + (i & 1), y + ((i >> 1) & 1)) in

@@ -96,6 +96,7 @@ ShadeTarget makeShadeTarget(const raster::RasterState& state, Framebuffer& fb,
   ShadeTarget s;
   s.width = fb.width();
   s.height = fb.height();
+  s.rowsUp = fb.rowsUp();
   s.color = &fb.color;
   s.bytesPerPixel = fb.color.bytesPerPixel;
   s.red = fb.color.red;

@@ -25,7 +25,9 @@ struct TextureStage;  // fragment/texture_stage.h
 // What a primitive's fragments are shaded with, fixed for the primitive: the
 // per-fragment state (which operations run, the key) and where they write.
 struct ShadeTarget {
-  int width = 0, height = 0;  // llvmpipe row py is GL row height - 1 - py
+  int width = 0, height = 0;
+  // llvmpipe row py is GL row py (a framebuffer object), else height - 1 - py.
+  bool rowsUp = false;
   // colour
   const ColorBuffer* color = nullptr;
   int bytesPerPixel = 4, red = 0, green = 1, blue = 2, alpha = 3;

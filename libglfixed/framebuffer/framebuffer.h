@@ -239,6 +239,14 @@ struct Framebuffer {
   bool doubleBuffered() const { return back.pixels != nullptr; }
   int width() const { return object ? objectWidth : front.width; }
   int height() const { return object ? objectHeight : front.height; }
+  // llvmpipe's row py is GL's row py: Mesa's state tracker renders a
+  // framebuffer object as GL has it (y up, Y_0_BOTTOM), but flips a window
+  // system buffer (OSMesa, a window: Y_0_TOP), whose row py is GL row
+  // height - 1 - py. Snapping, the fill rule and float rounding happen in
+  // llvmpipe's rows, so every stage asks the framebuffer being drawn.
+  bool rowsUp() const { return object; }
+  // The llvmpipe row of GL row y, and back (the same map).
+  int llvmpipeRow(int y) const { return rowsUp() ? y : height() - 1 - y; }
   // The buffers GL_FRONT, GL_BACK, GL_LEFT... name here, as Mesa resolves
   // them (buffers.c): on a single-buffered surface every back buffer is the
   // front one; GL_LEFT and GL_FRONT_AND_BACK draw into both buffers but read

@@ -86,7 +86,14 @@ primitive::PrimitiveState primitiveState(const Context& ctx, GLenum mode, bool s
   s.firstVertexConvention = ctx.lighting.provokingVertex == GL_FIRST_VERTEX_CONVENTION;
   s.cullFace = ctx.polygon.cullFace;
   s.cullFaceMode = ctx.polygon.cullFaceMode;
-  s.frontFace = ctx.polygon.frontFace;
+  // Into a framebuffer object Mesa does not flip y, and flips the notion of
+  // front instead (st_atom_rasterizer.c: front_ccw ^= 1 for Y_0_BOTTOM), so
+  // llvmpipe's front face is the other winding there.
+  const bool rowsUp = ctx.framebuffer.rowsUp();
+  const GLenum glFront = ctx.polygon.frontFace;
+  const GLenum llvmpipeFront = rowsUp ? (glFront == GL_CCW ? GL_CW : GL_CCW) : glFront;
+  s.frontFace = llvmpipeFront;
+  s.flipViewportY = !rowsUp;
   s.viewportX = ctx.viewport.x;
   s.viewportY = ctx.viewport.y;
   s.viewportWidth = ctx.viewport.width;
@@ -122,7 +129,8 @@ primitive::PrimitiveState primitiveState(const Context& ctx, GLenum mode, bool s
       to.depthFail = from.depthFail;
       to.depthPass = from.depthPass;
     }
-  r.frontFace = ctx.polygon.frontFace;
+  r.frontFace = llvmpipeFront;
+  r.bottomEdgeRule = !rowsUp;  // st_atom_rasterizer.c: only for Y_0_TOP
   r.varyingCount = separateSpecular ? 8 : 4;
   // Fog (GL 2.1 §3.10; fragment/fog.inc).
   r.fog = fragment::makeFogState(ctx.fog.enabled, ctx.fog.mode, ctx.fog.density, ctx.fog.start, ctx.fog.end,
@@ -166,7 +174,10 @@ primitive::PrimitiveState primitiveState(const Context& ctx, GLenum mode, bool s
     // Point sprites (raster/point.cpp): st/mesa's point_quad_rasterization
     // and sprite_coord_enable (st_atom_rasterizer.c).
     r.pointSprite = p.sprite;
-    r.spriteCoordOrigin = p.spriteCoordOrigin;
+    // The origin in llvmpipe's rows: GL's upper left is llvmpipe's lower
+    // left in a framebuffer object (st_atom_rasterizer.c).
+    r.spriteCoordOrigin =
+        rowsUp ? (p.spriteCoordOrigin == GL_UPPER_LEFT ? GL_LOWER_LEFT : GL_UPPER_LEFT) : p.spriteCoordOrigin;
     r.spriteCoordReplace = 0;
     if (p.sprite)
       for (size_t u = 0; u < p.coordReplace.size() && u < size_t(raster::kMaxTexCoordUnits); ++u)
@@ -235,6 +246,7 @@ raster::RasterState pixelRectRasterState(const Context& ctx) {
   }
   r.polygonStipple = nullptr;
   r.stippleEveryPrimitive = false;
+  r.bottomEdgeRule = true;  // the state tracker's own rasterizer state, in any framebuffer
   r.polygonOffset = false;
   r.textures = nullptr;
   r.texCoordUnits = 0;

@@ -328,6 +328,16 @@ void drawTexturedQuad(Context& ctx, const texture::TextureObject* object,
   if (depth) ps.raster.depthImage = *depth;
   if (depth && depth->stencil) writeStencilImageState(ctx, depth->depth != nullptr, ps.raster);
   ps.raster.firstVertexConvention = false;  // the state tracker's rasterizer state
+  // Into a framebuffer object the viewport still flips y, so the state
+  // tracker places the quad upside down: y = height - (int)(y + h * zoom),
+  // and flips the texture (draw_textured_quad, Y_0_BOTTOM).
+  if (ctx.framebuffer.rowsUp()) {
+    const float top = static_cast<float>(y) + static_cast<float>(height) * zoomY;
+    const long long flippedY = ctx.framebuffer.height() - static_cast<long long>(top);
+    q.y0 = static_cast<float>(flippedY);
+    q.y1 = static_cast<float>(flippedY) + static_cast<float>(height) * zoomY;
+    std::swap(q.t0, q.t1);
+  }
   ShadedVertices v;
   const float cz = q.z * 2.0f - 1.0f;
   auto clipX = [&](float x) { return x / w * 2.0f - 1.0f; };

@@ -27,7 +27,7 @@ struct FaceRule {
 };
 
 // draw_pipe_cull.c: det = (v0 - v2) x (v1 - v2) of window positions
-// (llvmpipe's y-down x, y). Returns true when the draw module drops the
+// (llvmpipe's x, y: y down, or up in a framebuffer object). Returns true when the draw module drops the
 // triangle.
 bool drawModuleCulls(const FaceRule& rule, const float* w0, const float* w1, const float* w2);
 

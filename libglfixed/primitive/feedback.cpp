@@ -10,8 +10,9 @@ namespace {
 
 class FeedbackSink final : public PrimitiveSink {
  public:
-  FeedbackSink(FeedbackState& feedback, int framebufferHeight, const glm::vec4& texCoord, bool perVertex)
-      : fb_(feedback), height_(static_cast<float>(framebufferHeight)), texCoord_(texCoord),
+  FeedbackSink(FeedbackState& feedback, int framebufferHeight, bool flipY, const glm::vec4& texCoord,
+               bool perVertex)
+      : fb_(feedback), height_(static_cast<float>(framebufferHeight)), flipY_(flipY), texCoord_(texCoord),
         perVertexTexCoord_(perVertex) {}
 
   void point(const ClipVertex& v) override {
@@ -33,10 +34,11 @@ class FeedbackSink final : public PrimitiveSink {
 
  private:
   // st_cb_feedback.c, feedback_vertex: the draw module's window y is down
-  // from the top (viewport.h), so y = height - y; w = 1 / (1/w), in float.
+  // from the top (viewport.h), so y = height - y, but in a framebuffer
+  // object (Y_0_BOTTOM) it is GL's; w = 1 / (1/w), in float.
   void vertex(const ClipVertex& v, int color) {
     fb_.token(v.window[0]);
-    fb_.token(height_ - v.window[1]);
+    fb_.token(flipY_ ? height_ - v.window[1] : v.window[1]);
     const GLenum type = fb_.type;
     if (type != GL_2D) fb_.token(v.window[2]);
     if (type == GL_4D_COLOR_TEXTURE) fb_.token(1.0f / v.window[3]);
@@ -48,6 +50,7 @@ class FeedbackSink final : public PrimitiveSink {
 
   FeedbackState& fb_;
   float height_;
+  bool flipY_;
   glm::vec4 texCoord_;
   // Texture coordinates (issue 14): each vertex's unit-0 coordinates from
   // the vertex stage (after texgen and the texture matrix, clipped ones
@@ -59,7 +62,7 @@ class FeedbackSink final : public PrimitiveSink {
 
 void feedbackPrimitives(const PrimitiveState& state, const ShadedVertices& vertices, int framebufferHeight,
                         const glm::vec4& texCoord, FeedbackState& feedback) {
-  FeedbackSink sink(feedback, framebufferHeight, texCoord, (vertices.texCoordUnits & 1u) != 0);
+  FeedbackSink sink(feedback, framebufferHeight, state.flipViewportY, texCoord, (vertices.texCoordUnits & 1u) != 0);
   drawUnrasterized(state, vertices, framebufferHeight, sink);
 }
 

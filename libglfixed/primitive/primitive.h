@@ -19,9 +19,13 @@ struct PrimitiveState {
   bool firstVertexConvention = false;  // glProvokingVertex(GL_FIRST_VERTEX_CONVENTION)
   bool cullFace = false;
   GLenum cullFaceMode = GL_BACK;
-  GLenum frontFace = GL_CCW;
+  GLenum frontFace = GL_CCW;  // as llvmpipe has it (raster::RasterState::frontFace)
   // Viewport (GL 2.1 §2.11.1).
   int viewportX = 0, viewportY = 0, viewportWidth = 0, viewportHeight = 0;
+  // The viewport transform flips y (viewport.h): a window-system buffer, not
+  // a framebuffer object (Framebuffer::rowsUp); st_draw_quad's pixel
+  // rectangles flip always (their quad is placed for it).
+  bool flipViewportY = true;
   double depthNear = 0, depthFar = 1;
   // How the batch was submitted. Mesa treats the ways differently: an indexed
   // draw splits quads otherwise (assemble.h), and glBegin/glEnd turns a

@@ -22,7 +22,7 @@ constexpr unsigned kEdge0 = 1, kEdge1 = 2, kEdge2 = 4, kAllEdges = 7;
 // DRAW_PIPE_RESET_STIPPLE: the line stipple restarts at this triangle's edges.
 constexpr unsigned kResetStipple = 8;
 
-// draw_pipe_cull.c: det = (v0 - v2) x (v1 - v2) in llvmpipe's y-down window
+// draw_pipe_cull.c: det = (v0 - v2) x (v1 - v2) in llvmpipe's window
 // space; det < 0 is counter-clockwise in GL's window space.
 float determinant(const ClipVertex& v0, const ClipVertex& v1, const ClipVertex& v2) {
   const float ex = v0.window[0] - v2.window[0];

@@ -51,7 +51,7 @@ void loadVertices(const ShadedVertices& in, uint32_t n, const ViewportTransform&
 }
 
 // After the clipper: the draw module's cull stage, then its two-sided colour
-// choice, by the sign of the same float determinant (y down, cull.h).
+// choice, by the sign of the same float determinant (llvmpipe's rows, cull.h).
 void emitTriangle(const Batch& b, const ClipVertex& v0, const ClipVertex& v1, const ClipVertex& v2) {
   if (drawModuleCulls(b.face, v0.window, v1.window, v2.window)) return;
   int color = kSinkFrontColor;
@@ -144,7 +144,7 @@ void drawUnrasterized(const PrimitiveState& state, const ShadedVertices& vertice
   if (n == 0) return;
   Batch b{state, sink,
           ViewportTransform::make(state.viewportX, state.viewportY, state.viewportWidth, state.viewportHeight,
-                                  state.depthNear, state.depthFar, framebufferHeight),
+                                  state.depthNear, state.depthFar, framebufferHeight, state.flipViewportY),
           FaceRule{state.cullFace, state.cullFaceMode, state.frontFace}, vertices.hasBack};
 
   struct SiteClipVertices {};

@@ -11,7 +11,7 @@
 namespace glfixed::primitive {
 
 ViewportTransform ViewportTransform::make(int x, int y, int width, int height, double depthNear,
-                                          double depthFar, int framebufferHeight) {
+                                          double depthFar, int framebufferHeight, bool flipY) {
   ViewportTransform v;
   const float fx = static_cast<float>(x), fy = static_cast<float>(y);
   const float halfWidth = 0.5f * static_cast<float>(width);
@@ -22,8 +22,8 @@ ViewportTransform ViewportTransform::make(int x, int y, int width, int height, d
   v.scale[0] = halfWidth;
   v.translate[0] = halfWidth + fx;
   // y flipped: gallium's y = 0 is the top row of the OSMesa buffer.
-  v.scale[1] = -halfHeight;
-  v.translate[1] = static_cast<float>(framebufferHeight) - (halfHeight + fy);
+  v.scale[1] = flipY ? -halfHeight : halfHeight;
+  v.translate[1] = flipY ? static_cast<float>(framebufferHeight) - (halfHeight + fy) : halfHeight + fy;
   v.scale[2] = static_cast<float>(0.5 * (f - n));
   v.translate[2] = static_cast<float>(0.5 * (n + f));
   return v;

@@ -9,6 +9,8 @@
 //   - a vertex made by the clipper is mapped in plain C instead,
 //     x_clip * (1/w) * scale + translate, unfused (draw_pipe_clip.c, interp).
 // Window y is therefore measured down from the top of the buffer (raster.h).
+// A framebuffer object is not flipped (Y_0_BOTTOM): scale_y = h/2,
+// translate_y = y + h/2, window y measured up as GL's.
 #pragma once
 
 #include <glm/glm.hpp>
@@ -22,7 +24,7 @@ struct ViewportTransform {
   // x, y, width, height as glViewport has them; near/far as glDepthRange has
   // them (Mesa stores both as floats, clamped to [0, 1]).
   static ViewportTransform make(int x, int y, int width, int height, double depthNear, double depthFar,
-                                int framebufferHeight);
+                                int framebufferHeight, bool flipY = true);
 
   // out = (x, y, z, 1/w) in window space, for a vertex from the vertex stage.
   void windowFromClip(const glm::vec4& clip, float out[4]) const;

@@ -2,10 +2,12 @@
 // (lp_setup_tri.c, do_triangle_ccw; lp_rast_tri.c).
 //
 // Coordinates are llvmpipe's: fixed point with 8 fractional bits, pixel
-// centres on the integer grid (see fixed_point.h), y pointing DOWN (row 0 is
-// the top of the OSMesa buffer, which Mesa renders upside down and flips on
-// read-back). The triangle is counter-clockwise in GL window space, which is
-// a positive llvmpipe area (fixedArea() > 0).
+// centres on the integer grid (see fixed_point.h), y pointing DOWN for a
+// window-system buffer (row 0 is the top of the OSMesa buffer, which Mesa
+// renders upside down and flips on read-back), UP for a framebuffer object
+// (Framebuffer::rowsUp). A set-up triangle has a positive llvmpipe area
+// (fixedArea() > 0): counter-clockwise in GL window space when y is down,
+// clockwise when y is up.
 #pragma once
 
 #include <cstdint>
@@ -20,8 +22,8 @@ struct FixedTriangle {
 };
 
 // llvmpipe's area: (x0-x1)(y2-y0) - (x2-x0)(y0-y1), exact in 64 bits.
-// Positive: counter-clockwise in GL window coordinates (clockwise as seen in
-// llvmpipe's y-down space). Zero-area triangles are never drawn.
+// Positive: clockwise as seen in llvmpipe's space (counter-clockwise in GL
+// window coordinates when y is down). Zero-area triangles are never drawn.
 inline int64_t fixedArea(const FixedTriangle& t) {
   int64_t dx01 = int64_t(t.x[0]) - t.x[1], dy01 = int64_t(t.y[0]) - t.y[1];
   int64_t dx20 = int64_t(t.x[2]) - t.x[0], dy20 = int64_t(t.y[2]) - t.y[0];
@@ -32,23 +34,27 @@ inline int64_t fixedArea(const FixedTriangle& t) {
 // E(px, py) = dcdx * (x_i - 256 px) - dcdy * (y_i - 256 py) + bias, and pixel
 // (px, py) is inside when E > 0 for all three edges. `bias` (1 or 0) is the
 // fill rule: a centre exactly on an edge is inside only for a "left" edge
-// (dcdx < 0) or, with GL's bottom-edge rule in llvmpipe's y-down space, a
-// horizontal edge with dcdy < 0 (the bottom edge in GL window space).
+// (dcdx < 0) or a horizontal edge at GL's bottom: with llvmpipe's
+// bottom_edge_rule (y down) one with dcdy < 0, without it (a framebuffer
+// object, y up: the top-left rule in llvmpipe's rows) one with dcdy > 0
+// (lp_setup_tri.c; st_atom_rasterizer.c sets the rule for Y_0_TOP only).
 struct Edge {
   int64_t dcdx = 0, dcdy = 0;  // y_i - y_{i+1}, x_i - x_{i+1}
   int64_t c = 0;               // E at pixel (0, 0), fill-rule bias included
 
-  static Edge make(const FixedTriangle& t, int i) { return make(t.x, t.y, 3, i); }
+  static Edge make(const FixedTriangle& t, int i, bool bottomEdgeRule) {
+    return make(t.x, t.y, 3, i, bottomEdgeRule);
+  }
   // The edge from vertex i to vertex i+1 (mod n) of a convex polygon of n
   // snapped vertices (a line's or a point's quadrilateral has 4), with the
   // same fill rule.
-  static Edge make(const int32_t* x, const int32_t* y, int n, int i) {
+  static Edge make(const int32_t* x, const int32_t* y, int n, int i, bool bottomEdgeRule) {
     int j = (i + 1) % n;
     Edge e;
     e.dcdx = int64_t(y[i]) - y[j];
     e.dcdy = int64_t(x[i]) - x[j];
     e.c = e.dcdx * x[i] - e.dcdy * y[i];
-    if (e.dcdx < 0 || (e.dcdx == 0 && e.dcdy < 0)) e.c += 1;
+    if (e.dcdx < 0 || (e.dcdx == 0 && (bottomEdgeRule ? e.dcdy < 0 : e.dcdy > 0))) e.c += 1;
     return e;
   }
   // E at pixel (px, py).

@@ -11,7 +11,7 @@
 namespace glfixed::raster {
 
 // The plane of one scalar attribute: the value at pixel (px, py) (integer
-// pixel indices in llvmpipe's y-down space; the centre is implied) is
+// pixel indices in llvmpipe's space (y down, up in an object); the centre is implied) is
 // fma(dady, py, fma(dadx, px, a0)).
 struct Plane {
   float a0 = 0, dadx = 0, dady = 0;

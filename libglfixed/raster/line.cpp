@@ -233,19 +233,21 @@ bool setupLine(const RasterState& state, const Framebuffer& fb, const LineStyle&
     aliasedLineCorners(v1, v2, width, info.dx, info.dy, x, y);
   }
 
-  // Bounding box (lp_setup_line.c; bottom-left fill convention), in pixels.
+  // Bounding box (lp_setup_line.c; `adj` 1 for the bottom-left fill
+  // convention), in pixels.
+  const int64_t adj = state.bottomEdgeRule ? 1 : 0;
   const int64_t minX = std::min({x[0], x[1], x[2], x[3]}), maxX = std::max({x[0], x[1], x[2], x[3]});
   const int64_t minY = std::min({y[0], y[1], y[2], y[3]}), maxY = std::max({y[0], y[1], y[2], y[3]});
   const int64_t bx0 = (minX + (kFixedOne - 1)) >> kSubpixelBits;
   const int64_t bx1 = ((maxX + (kFixedOne - 1)) >> kSubpixelBits) - 1;
-  const int64_t by0 = (minY + kFixedOne) >> kSubpixelBits;
-  const int64_t by1 = ((maxY + kFixedOne) >> kSubpixelBits) - 1;
+  const int64_t by0 = (minY + (kFixedOne - 1) + adj) >> kSubpixelBits;
+  const int64_t by1 = ((maxY + (kFixedOne - 1) + adj) >> kSubpixelBits) - 1;
   // The draw region: the framebuffer (and the scissor box, when there is one),
   // llvmpipe rows. A line is not cut at the viewport.
-  const int height = fb.height();
   const WindowRegion& region = state.pointLineRegion;
   const int64_t rx0 = std::max(0, region.x0), rx1 = std::min(fb.width(), region.x1) - 1;
-  const int64_t ry0 = std::max(0, height - region.y1), ry1 = std::min(height, height - region.y0) - 1;
+  const LlvmpipeRows rows = llvmpipeRows(fb, region.y0, region.y1);
+  const int64_t ry0 = rows.first, ry1 = rows.last;
   const int64_t cx0 = std::max(bx0, rx0), cx1 = std::min(bx1, rx1);
   const int64_t cy0 = std::max(by0, ry0), cy1 = std::min(by1, ry1);
   if (cx0 > cx1 || cy0 > cy1) return false;
@@ -255,7 +257,7 @@ bool setupLine(const RasterState& state, const Framebuffer& fb, const LineStyle&
   t.y1 = static_cast<int>(cy1);
 
   t.edgeCount = 4;
-  for (int i = 0; i < 4; ++i) t.edge[i] = Edge::make(x, y, 4, i);
+  for (int i = 0; i < 4; ++i) t.edge[i] = Edge::make(x, y, 4, i, state.bottomEdgeRule);
 
   t.varyingCount = state.varyingCount == 8 ? 8 : 4;
   t.z = info.plane(v1.z, v2.z);

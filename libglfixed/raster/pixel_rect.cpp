@@ -7,17 +7,18 @@ namespace glfixed::raster {
 
 namespace {
 
-// st_draw_quad's vertex: clip x = x / width * 2 - 1 (draw_bitmap_quad,
-// draw_textured_quad), then the viewport of the whole buffer, upside down
-// (cso_set_viewport_dims with Y_0_TOP), applied as the vertex shader's
-// epilogue does: fma(clip, scale, translate) with w = 1.
-WindowVertex quadVertex(float x, float y, float z, float fbWidth, float fbHeight) {
+// st_draw_quad's vertex: clip x = x / width * 2 - 1 (draw_bitmap_quad),
+// then the viewport of the whole buffer, upside down for a window-system
+// buffer (cso_set_viewport_dims with Y_0_TOP), not for a framebuffer object,
+// applied as the vertex shader's epilogue does: fma(clip, scale, translate)
+// with w = 1.
+WindowVertex quadVertex(float x, float y, float z, float fbWidth, float fbHeight, bool flipY) {
   WindowVertex v;
   const float cx = x / fbWidth * 2.0f - 1.0f;
   const float cy = y / fbHeight * 2.0f - 1.0f;
   const float cz = z * 2.0f - 1.0f;
   v.x = std::fma(cx, fbWidth * 0.5f, fbWidth * 0.5f);
-  v.y = std::fma(cy, -fbHeight * 0.5f, fbHeight * 0.5f);
+  v.y = std::fma(cy, flipY ? -fbHeight * 0.5f : fbHeight * 0.5f, fbHeight * 0.5f);
   v.z = std::fma(cz, 0.5f, 0.5f);
   v.oneOverW = 1.0f;
   return v;
@@ -27,8 +28,9 @@ WindowVertex quadVertex(float x, float y, float z, float fbWidth, float fbHeight
 
 void drawPixelQuad(const RasterState& state, Framebuffer& fb, const PixelQuad& q) {
   const float w = static_cast<float>(fb.width()), h = static_cast<float>(fb.height());
-  WindowVertex v[4] = {quadVertex(q.x0, q.y1, q.z, w, h), quadVertex(q.x1, q.y1, q.z, w, h),
-                       quadVertex(q.x1, q.y0, q.z, w, h), quadVertex(q.x0, q.y0, q.z, w, h)};
+  const bool flip = !fb.rowsUp();
+  WindowVertex v[4] = {quadVertex(q.x0, q.y1, q.z, w, h, flip), quadVertex(q.x1, q.y1, q.z, w, h, flip),
+                       quadVertex(q.x1, q.y0, q.z, w, h, flip), quadVertex(q.x0, q.y0, q.z, w, h, flip)};
   const float s[4] = {q.s0, q.s1, q.s1, q.s0}, t[4] = {q.t0, q.t0, q.t1, q.t1};
   for (int i = 0; i < 4; ++i) {
     for (int k = 0; k < 4; ++k) v[i].varying[k] = q.color[k];

@@ -47,9 +47,11 @@ int pointWidthInPixels(float size) {
 bool setupPoint(const RasterState& state, const Framebuffer& fb, const WindowVertex& v, float size,
                 const float* flatVaryings, PrimitiveSetup& t) {
   // The vertex in fixed point without the half-pixel shift triangles use;
-  // y one unit up for GL's bottom-left fill convention (llvmpipe's `adj`).
+  // y one unit up for GL's bottom-left fill convention in y-down rows
+  // (llvmpipe's `adj`, 0 in a framebuffer object's rows).
+  const int64_t adj = state.bottomEdgeRule ? 1 : 0;
   const int64_t x0 = snapPoint(v.x);
-  const int64_t y0 = int64_t(snapPoint(v.y)) - 1;
+  const int64_t y0 = int64_t(snapPoint(v.y)) - adj;
   const int width = state.pointSprite ? 0 : pointWidthInPixels(size);
   int64_t bx, by, bx1, by1;
   if (state.pointSprite) {
@@ -62,8 +64,9 @@ bool setupPoint(const RasterState& state, const Framebuffer& fb, const WindowVer
                   sy0 = int64_t(snapPoint(v.y - 0.5f)) - fw / 2;
     bx = (sx0 + kFixedOne - 1) >> kSubpixelBits;
     bx1 = ((sx0 + fw + kFixedOne - 1) >> kSubpixelBits) - 1;
-    by = (sy0 >> kSubpixelBits) + 1;
-    by1 = (sy0 + fw) >> kSubpixelBits;
+    // (Rows up, the top-left rule: [Y0, Y0 + w).)
+    by = (sy0 + kFixedOne - 1 + adj) >> kSubpixelBits;
+    by1 = ((sy0 + fw + kFixedOne - 1 + adj) >> kSubpixelBits) - 1;
   } else if (width == 1) {
     bx = x0 >> kSubpixelBits;
     by = y0 >> kSubpixelBits;
@@ -76,13 +79,13 @@ bool setupPoint(const RasterState& state, const Framebuffer& fb, const WindowVer
   }
   if (!state.pointSprite) bx1 = bx + width - 1, by1 = by + width - 1;
   // The region cut to the buffer, GL window space (y up), in llvmpipe rows
-  // (y down).
+  // (Framebuffer::rowsUp).
   const WindowRegion& region = state.pointLineRegion;
-  const int64_t height = fb.height();
   const int64_t rx0 = std::max({bx, int64_t(region.x0), int64_t(0)}),
                 rx1 = std::min({bx1, int64_t(region.x1) - 1, int64_t(fb.width()) - 1});
-  const int64_t ry0 = std::max({by, height - region.y1, int64_t(0)});
-  const int64_t ry1 = std::min({by1, height - 1 - region.y0, height - 1});
+  const LlvmpipeRows rows = llvmpipeRows(fb, region.y0, region.y1);
+  const int64_t ry0 = std::max(by, rows.first);
+  const int64_t ry1 = std::min(by1, rows.last);
   if (rx0 > rx1 || ry0 > ry1) return false;
   t.x0 = static_cast<int>(rx0);
   t.x1 = static_cast<int>(rx1);
@@ -96,7 +99,7 @@ bool setupPoint(const RasterState& state, const Framebuffer& fb, const WindowVer
   const int32_t top = t.y0 * kFixedOne - kFixedOne / 2, bottom = t.y1 * kFixedOne + kFixedOne / 2;
   const int32_t ex[4] = {left, left, right, right}, ey[4] = {top, bottom, bottom, top};
   t.edgeCount = 4;
-  for (int i = 0; i < 4; ++i) t.edge[i] = Edge::make(ex, ey, 4, i);
+  for (int i = 0; i < 4; ++i) t.edge[i] = Edge::make(ex, ey, 4, i, state.bottomEdgeRule);
 
   // Constant planes: the window z, 1/w, and each colour.
   t.varyingCount = state.varyingCount == 8 ? 8 : 4;

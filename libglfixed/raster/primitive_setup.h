@@ -32,7 +32,7 @@ struct PrimitiveSetup {
   uint32_t texCoordUnits = 0;
   // Fog: varying[kFogVarying] holds the fog distance's plane (with `w`).
   bool fog = false;
-  int x0 = 0, x1 = -1, y0 = 0, y1 = -1;  // inclusive pixel bounds, llvmpipe (y-down) rows
+  int x0 = 0, x1 = -1, y0 = 0, y1 = -1;  // inclusive pixel bounds, llvmpipe rows (Framebuffer::rowsUp)
   // Smooth points (raster/point.cpp): one of the two triangles of the draw
   // module's aapoint quad, whose fragment shader Mesa rewrites
   // (nir_lower_aapoint_fs): d = s^2 + t^2 from the interpolated (s, t) in

@@ -29,11 +29,12 @@ constexpr int kFogVarying = kTexCoordVarying + 4 * kMaxTexCoordUnits;
 constexpr int kMaxVaryings = kFogVarying + 1;
 
 // A vertex in window coordinates AS LLVMPIPE SEES THEM: Mesa renders an OSMesa
-// buffer upside down (gallium's y = 0 is the top row) and flips it when it
-// hands the image back. So `y` is measured DOWN from the top edge of the
-// framebuffer: yDown = framebufferHeight - yGL. Keeping llvmpipe's orientation
-// matters because snapping and float rounding happen there (see
-// primitive/viewport.h for how x, y, z are computed).
+// buffer (or a window) upside down (gallium's y = 0 is the top row) and flips
+// it when it hands the image back. So `y` is measured DOWN from the top edge
+// of such a framebuffer: yDown = framebufferHeight - yGL. A framebuffer
+// object is rendered as GL has it: there `y` is GL's (Framebuffer::rowsUp).
+// Keeping llvmpipe's orientation matters because snapping and float rounding
+// happen there (see primitive/viewport.h for how x, y, z are computed).
 struct WindowVertex {
   float x = 0, y = 0, z = 0;  // x, y down from the top, z in [0,1] after glDepthRange
   float oneOverW = 1;         // 1 / w_clip, for perspective-correct interpolation
@@ -53,7 +54,14 @@ struct RasterState {
   // The stencil test (both faces) and which winding faces front
   // (glFrontFace): a triangle's set-up gives its facing (PrimitiveSetup).
   fragment::StencilState stencil;
+  // As llvmpipe has it (front_ccw): GL's glFrontFace, the other one when
+  // drawing into a framebuffer object, whose y is not flipped (Mesa's
+  // st_atom_rasterizer.c), so that GL's front stays front.
   GLenum frontFace = GL_CCW;
+  // llvmpipe's bottom_edge_rule: on for a window-system buffer (y down), off
+  // for a framebuffer object (the top-left rule in its y-up rows); on for the
+  // state tracker's own quads (bitmaps, pixel rectangles) everywhere.
+  bool bottomEdgeRule = true;
   int varyingCount = 4;  // 4: primary colour; 8: primary + secondary, summed per fragment
   // Bit u: the vertices carry unit u's texture coordinates (varyings
   // kTexCoordVarying + 4 u ...), interpolated perspective-correct, never flat.
@@ -104,6 +112,7 @@ struct RasterState {
   // coordinates, with GL_POINT_SPRITE_COORD_ORIGIN.
   bool pointSprite = false;
   uint32_t spriteCoordReplace = 0;
+  // In llvmpipe's rows: GL's origin, the other one into a framebuffer object.
   GLenum spriteCoordOrigin = GL_UPPER_LEFT;
   // Blending or the logic op before the colour write (fragment/blend.inc).
   fragment::BlendState blend;
@@ -120,6 +129,18 @@ struct RasterState {
   // that pass every test are added to it (state/query_objects.h).
   uint64_t* samplesPassed = nullptr;
 };
+
+// The llvmpipe rows [first, last] of GL rows [y0, y1) of `fb`, cut to the buffer.
+struct LlvmpipeRows {
+  int64_t first = 0, last = -1;
+};
+inline LlvmpipeRows llvmpipeRows(const Framebuffer& fb, int64_t y0, int64_t y1) {
+  const int64_t h = fb.height();
+  y0 = y0 < 0 ? 0 : y0;
+  y1 = y1 > h ? h : y1;
+  if (fb.rowsUp()) return {y0, y1 - 1};
+  return {h - y1, h - 1 - y0};
+}
 
 // Snaps the three vertices to llvmpipe's 1/256 grid (fixed_point.h) and
 // returns the sign of the fixed-point area: +1 counter-clockwise in GL window

@@ -1,6 +1,7 @@
 // Triangle set-up: snapping, bounding box, edges, attribute planes and
-// polygon offset, in llvmpipe's y-down window space (see raster.h); the
-// fragments are shaded by the fragment stage (fragment/shade.h).
+// polygon offset, in llvmpipe's window space (y down, or up in a framebuffer
+// object: see raster.h); the fragments are shaded by the fragment stage
+// (fragment/shade.h).
 // Every float operation here must round exactly as llvmpipe's does: forbid
 // contracting a * b + c into a fused multiply-add (GCC contracts by default
 // in C++ whenever the target has FMA).
@@ -57,25 +58,27 @@ bool setupTriangle(const RasterState& state, const Framebuffer& fb, const FixedT
                    const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2,
                    const float* flatVaryings, PrimitiveSetup& t) {
   // Bounding box as llvmpipe computes it (x1 exclusive of a right vertex on a
-  // pixel centre, y0 exclusive of a top one, for GL's bottom-left rule).
+  // pixel centre; with the bottom-edge rule y0 exclusive of a top one, else
+  // y1 exclusive of a bottom one: llvmpipe's `adj`).
+  const int32_t adj = state.bottomEdgeRule ? 1 : 0;
   const int32_t minX = std::min({fixed.x[0], fixed.x[1], fixed.x[2]});
   const int32_t maxX = std::max({fixed.x[0], fixed.x[1], fixed.x[2]});
   const int32_t minY = std::min({fixed.y[0], fixed.y[1], fixed.y[2]});
   const int32_t maxY = std::max({fixed.y[0], fixed.y[1], fixed.y[2]});
   t.x0 = minX >> kSubpixelBits;
   t.x1 = (maxX - 1) >> kSubpixelBits;
-  t.y0 = (minY + 1) >> kSubpixelBits;
-  t.y1 = maxY >> kSubpixelBits;
+  t.y0 = (minY + adj) >> kSubpixelBits;
+  t.y1 = (maxY - 1 + adj) >> kSubpixelBits;
   // The drawable region: the scissor (GL window space, y up) in llvmpipe rows.
-  const int height = fb.height();
+  const LlvmpipeRows rows = llvmpipeRows(fb, state.scissorY0, state.scissorY1);
   t.x0 = std::max({t.x0, state.scissorX0, 0});
   t.x1 = std::min({t.x1, state.scissorX1 - 1, fb.width() - 1});
-  t.y0 = std::max({t.y0, height - state.scissorY1, 0});
-  t.y1 = std::min({t.y1, height - 1 - state.scissorY0, height - 1});
+  t.y0 = static_cast<int>(std::max<int64_t>(t.y0, rows.first));
+  t.y1 = static_cast<int>(std::min<int64_t>(t.y1, rows.last));
   if (t.x0 > t.x1 || t.y0 > t.y1) return false;
 
   t.edgeCount = 3;
-  for (int i = 0; i < 3; ++i) t.edge[i] = Edge::make(fixed, i);
+  for (int i = 0; i < 3; ++i) t.edge[i] = Edge::make(fixed, i, state.bottomEdgeRule);
 
   t.varyingCount = state.varyingCount == 8 ? 8 : 4;
   const PlaneSetup ps(v0.x, v0.y, v1.x, v1.y, v2.x, v2.y);

@@ -504,6 +504,15 @@ void packImage(const TextureImage& image, const ClientLayout& layout, GLenum for
             v |= static_cast<uint32_t>(std::nearbyint(clamp01(c[n]) * static_cast<float>(max))) << shift;
           }
           writeElement(out, packed.bytes, v);
+        } else if (format == GL_DEPTH_COMPONENT && (type == GL_UNSIGNED_INT || type == GL_INT)) {
+          // Mesa packs depth as (GLuint)(z * 4294967295.0) and (GLint)(z *
+          // 2147483647.0) in double, truncated (_mesa_pack_depth_span,
+          // FLOAT_TO_UINT): a 24-bit 0x800000 (z 0.50000006 in float) reads
+          // 0x800000ff, where rounding the double would give 0x80000100.
+          const double z = clamp01(c[0]);
+          const uint32_t v = type == GL_UNSIGNED_INT ? static_cast<uint32_t>(z * 4294967295.0)
+                                                     : static_cast<uint32_t>(static_cast<int32_t>(z * 2147483647.0));
+          writeElement(out, bytes, v);
         } else {
           for (int n = 0; n < components; ++n)
             writeElement(out + n * bytes, bytes, floatToElement(c[n], type));

@@ -44,10 +44,9 @@ const FormatCase kCases[] = {
     {true, 0x8050, {5, 5, 5, 0}, 0x0ded3720u, 0x5d212df2u, 0xb6688d5fu, 0u},  // GL_RGB5
     {true, 0x804F, {4, 4, 4, 0}, 0xfe927532u, 0x27062d53u, 0xb55f3b78u, 0u},  // GL_RGB4
     {true, 0x8055, {4, 4, 4, 4}, 0x950b1800u, 0x96ce3c1bu, 0xcdbed51du, 0u},  // GL_RGBA2
-    // Float: the bytes only. The floats differ in their last bits on ~25% of
-    // pixels: llvmpipe interpolates an object's colours y-up, this library y-down.
-    {true, 0x8814, {32, 32, 32, 32}, 0x8797beacu, 0u, 0u, 0u},  // GL_RGBA32F
-    {true, 0x8815, {32, 32, 32, 0}, 0x8976bcfau, 0u, 0u, 0u},   // GL_RGB32F
+    // Float: every bit of the interpolation (llvmpipe's, y up in an object).
+    {true, 0x8814, {32, 32, 32, 32}, 0x8797beacu, 0xc971aafeu, 0xf8e5f55au, 0u},  // GL_RGBA32F
+    {true, 0x8815, {32, 32, 32, 0}, 0x8976bcfau, 0xf6cd264fu, 0xcfb997ebu, 0u},   // GL_RGB32F
     {true, 0x8C43, {8, 8, 8, 8}, 0xec22a789u, 0x09abfc1du, 0xac092f60u, 0u},  // GL_SRGB8_ALPHA8
     {false, 0x8058, {8, 8, 8, 8}, 0xec22a789u, 0x09abfc1du, 0xac092f60u, 0x09abfc1du},
     {false, 0x8051, {8, 8, 8, 0}, 0xbda075cdu, 0x4f676471u, 0x35caa80du, 0x4f676471u},

@@ -99,7 +99,7 @@ TEST(FillRule, SpanClippingMatchesPerPixelTests) {
     }
     if (fixedArea(t) <= 0) std::swap(t.x[0], t.x[1]), std::swap(t.y[0], t.y[1]);
     if (fixedArea(t) == 0) continue;
-    Edge e[3] = {Edge::make(t, 0), Edge::make(t, 1), Edge::make(t, 2)};
+    Edge e[3] = {Edge::make(t, 0, true), Edge::make(t, 1, true), Edge::make(t, 2, true)};
     for (int py = -25; py < 65; ++py) {
       int64_t lo = -30, hi = 70;
       for (const Edge& edge : e) clipSpanToEdge(edge, py, lo, hi);
@@ -108,6 +108,38 @@ TEST(FillRule, SpanClippingMatchesPerPixelTests) {
         ASSERT_EQ(inside, px >= lo && px <= hi) << "iteration " << iter << " pixel " << px << "," << py;
       }
     }
+  }
+}
+
+// A framebuffer object's rows are GL's (y up), where llvmpipe runs without
+// its bottom_edge_rule (the top-left rule): the pixels a triangle covers there
+// are the mirror image of those its mirror image covers with the rule in the
+// y-down rows, so GL's bottom-left rule holds in both.
+TEST(FillRule, TopLeftRuleInRowsUpMirrorsTheBottomEdgeRule) {
+  std::mt19937 rng(17);
+  std::uniform_int_distribution<int32_t> coord(-10, 40);
+  std::uniform_int_distribution<int32_t> fraction(0, 255);
+  for (int iter = 0; iter < 1000; ++iter) {
+    FixedTriangle down;
+    for (int i = 0; i < 3; ++i) {
+      // Mostly on pixel centres, so that the rule decides many pixels.
+      down.x[i] = coord(rng) * 256 + (iter % 2 ? 0 : fraction(rng));
+      down.y[i] = coord(rng) * 256 + (iter % 3 ? 0 : fraction(rng));
+    }
+    if (iter % 4 == 0) down.y[1] = down.y[0];  // a horizontal edge
+    if (fixedArea(down) < 0) std::swap(down.x[0], down.x[1]), std::swap(down.y[0], down.y[1]);
+    if (fixedArea(down) == 0) continue;
+    // y -> -y reverses the winding: swap two vertices to keep the area positive.
+    FixedTriangle up = {{down.x[1], down.x[0], down.x[2]}, {-down.y[1], -down.y[0], -down.y[2]}};
+    ASSERT_GT(fixedArea(up), 0);
+    Edge d[3], u[3];
+    for (int i = 0; i < 3; ++i) d[i] = Edge::make(down, i, true), u[i] = Edge::make(up, i, false);
+    for (int py = -12; py <= 42; ++py)
+      for (int px = -12; px <= 42; ++px) {
+        const bool inDown = d[0].inside(px, py) && d[1].inside(px, py) && d[2].inside(px, py);
+        const bool inUp = u[0].inside(px, -py) && u[1].inside(px, -py) && u[2].inside(px, -py);
+        ASSERT_EQ(inDown, inUp) << "iteration " << iter << " pixel " << px << "," << py;
+      }
   }
 }
 
@@ -122,7 +154,7 @@ TEST(FillRule, SteppedSpansMatchDividedSpans) {
     if (fixedArea(t) < 0) std::swap(t.x[0], t.x[1]), std::swap(t.y[0], t.y[1]);
     if (fixedArea(t) == 0) continue;
     for (int i = 0; i < 3; ++i) {
-      const Edge e = Edge::make(t, i);
+      const Edge e = Edge::make(t, i, true);
       EdgeSpanStepper stepper(e, -310);
       for (int py = -310; py < 310; ++py) {
         int64_t lo1 = -400, hi1 = 400, lo2 = -400, hi2 = 400;

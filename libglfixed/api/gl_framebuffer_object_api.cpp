@@ -378,8 +378,10 @@ GLAPI void APIENTRY glGetFramebufferAttachmentParameteriv(GLenum target, GLenum 
   switch (pname) {
     case 0x8210: *params = GL_LINEAR; return;  // GL_FRAMEBUFFER_ATTACHMENT_COLOR_ENCODING
     case 0x8211:  // _COMPONENT_TYPE: unsigned normalized, float for the float renderbuffers (probed)
-      // A depth-stencil image at the stencil attachment is the depth's (probed).
-      *params = attachment == kStencilAttachment && sizes[4] == 0 ? GL_UNSIGNED_INT
+      // Of a depth-stencil image at the stencil attachment the depth's, of a
+      // stencil-only one GL_INDEX; at GL_DEPTH_STENCIL_ATTACHMENT an error (probed).
+      if (attachment == kDepthStencilAttachment) return ctx->recordError(GL_INVALID_OPERATION);
+      *params = attachment == kStencilAttachment && sizes[4] == 0 ? 0x8222  // GL_INDEX
                 : floatChannels                                 ? GL_FLOAT
                                                                 : 0x8C17;
       return;

@@ -405,6 +405,8 @@ GLAPI void APIENTRY glGenerateMipmap(GLenum target) {
     }
   }
   if (!object.face[0][base].defined()) return;
+  // No mipmaps of a depth-stencil texture (Mesa; GL_GENERATE_MIPMAP makes them).
+  if (object.face[0][base].format == texture::TexelFormat::Z24S8) return ctx->recordError(GL_INVALID_OPERATION);
   api::beginStateChange(*ctx, GL_TEXTURE_BIT);
   for (int f = 0; f < faces; ++f)
     if (!texture::generateMipmaps(object, f, base, maxLevels(index)))

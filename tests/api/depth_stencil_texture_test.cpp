@@ -289,6 +289,21 @@ TEST_F(DepthStencilTextureTest, UploadsAndReadBacks) {
   EXPECT_NO_GL_ERROR();
 }
 
+TEST_F(DepthStencilTextureTest, NoGenerateMipmap) {
+  void (*generateMipmap)(GLenum) = nullptr;
+  load(generateMipmap, "glGenerateMipmap");
+  ASSERT_NE(generateMipmap, nullptr);
+  const std::vector<GLuint> d = Ramp();
+  texture(GL_TEXTURE_2D);
+  glTexImage2D(GL_TEXTURE_2D, 0, kDepth24Stencil8, 4, 4, 0, kDepthStencil, kUnsignedInt24_8, d.data());
+  generateMipmap(GL_TEXTURE_2D);
+  EXPECT_GL_ERROR(GL_INVALID_OPERATION);
+  EXPECT_EQ(level(GL_TEXTURE_2D, GL_TEXTURE_WIDTH), 4);
+  GLint w = -7;
+  glGetTexLevelParameteriv(GL_TEXTURE_2D, 1, GL_TEXTURE_WIDTH, &w);
+  EXPECT_EQ(w, 0);
+}
+
 TEST_F(DepthStencilTextureTest, CopyTexImageFromTheDepthStencilBuffer) {
   glViewport(0, 0, 16, 16);
   glClearDepth(0.25);
@@ -358,6 +373,8 @@ TEST_F(DepthStencilTextureTest, AttachmentsAndCompleteness) {
   EXPECT_EQ(attachmentParam(kDepthStencilAttachment, kObjectName), GLint(ds));
   EXPECT_EQ(attachmentParam(kDepthStencilAttachment, kStencilSize), 8);
   EXPECT_NO_GL_ERROR();
+  EXPECT_EQ(attachmentParam(kDepthStencilAttachment, kComponentType), -7);
+  EXPECT_GL_ERROR(GL_INVALID_OPERATION);
 
   GLuint fb2 = 0;
   f.genFramebuffers(1, &fb2);
@@ -389,6 +406,13 @@ TEST_F(DepthStencilTextureTest, AttachmentsAndCompleteness) {
   f.framebufferTexture2D(kFramebuffer, kDepthAttachment, GL_TEXTURE_2D, ds, 0);
   f.framebufferRenderbuffer(kFramebuffer, kStencilAttachment, kRenderbuffer, rb);
   EXPECT_EQ(f.checkFramebufferStatus(kFramebuffer), kUnsupported);
+  EXPECT_EQ(attachmentParam(kStencilAttachment, kComponentType), GLint(kUnsignedNormalized));
+  GLuint s8 = 0;
+  f.genRenderbuffers(1, &s8);
+  f.bindRenderbuffer(kRenderbuffer, s8);
+  f.renderbufferStorage(kRenderbuffer, 0x8D48, 16, 16);  // GL_STENCIL_INDEX8
+  f.framebufferRenderbuffer(kFramebuffer, kStencilAttachment, kRenderbuffer, s8);
+  EXPECT_EQ(attachmentParam(kStencilAttachment, kComponentType), 0x8222);  // GL_INDEX
   f.framebufferRenderbuffer(kFramebuffer, kStencilAttachment, kRenderbuffer, 0);
   f.framebufferTexture2D(kFramebuffer, kDepthAttachment, GL_TEXTURE_2D, 0, 0);
   f.framebufferTexture2D(kFramebuffer, kColor0, GL_TEXTURE_2D, 0, 0);

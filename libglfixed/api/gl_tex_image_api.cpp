@@ -305,7 +305,6 @@ GLAPI void APIENTRY glGetTexImage(GLenum target, GLint level, GLenum format, GLe
   const bool depthImage = base == GL_DEPTH_COMPONENT || base == GL_DEPTH_STENCIL;
   if (format == GL_STENCIL_INDEX || format == GL_DEPTH_STENCIL) {
     if (image.defined() && base != GL_DEPTH_STENCIL) return ctx->recordError(GL_INVALID_OPERATION);
-    if (!image.defined() && format == GL_STENCIL_INDEX) return ctx->recordError(GL_INVALID_OPERATION);
   }
   if (!image.defined()) return;  // nothing is written
   if (depthImage != (format == GL_DEPTH_COMPONENT || format == GL_DEPTH_STENCIL || format == GL_STENCIL_INDEX))

@@ -319,20 +319,32 @@ namespace {
 // One GL_DEPTH_STENCIL group into a depth (or depth-stencil) texel: Z24 and
 // Z24S8 take the 24 bits as they are (Mesa's texstore copies them; the
 // stencil only where the texture has one), the other depth formats the
-// depth as a value in [0, 1]. No pixel transfer (Mesa applies none to
-// depth-stencil data).
-void unpackDepthStencil(const uint8_t* p, GLenum type, bool swap, TexelFormat format, uint8_t* texel) {
+// depth as a value in [0, 1]. Pixel transfer (§3.6.5) as Mesa applies it:
+// the depth scale and bias to the depth as a float, stored truncated (0.5
+// stores 0x111111 as 0x088888), GL_INDEX_SHIFT and _OFFSET to the stencil.
+void unpackDepthStencil(const uint8_t* p, GLenum type, bool swap, const PixelModeAttrib& transfer,
+                        TexelFormat format, uint8_t* texel) {
   uint32_t depth24, stencil;
   float depth;
+  const bool scaleBias = transfer.depthScale != 1 || transfer.depthBias != 0;
   if (type == GL_UNSIGNED_INT_24_8) {
     const uint32_t v = readElement(p, 4, swap);
     depth24 = v >> 8;
     stencil = v & 0xffu;
     depth = static_cast<float>(depth24) / 16777215.0f;
-  } else {  // GL_FLOAT_32_UNSIGNED_INT_24_8_REV
+  } else {  // GL_FLOAT_32_UNSIGNED_INT_24_8_REV: truncated to 24 bits (0.25 stores 0x3fffff)
     depth = clamp01(elementToFloat(readElement(p, 4, swap), GL_FLOAT));
     stencil = readElement(p + 4, 4, swap) & 0xffu;
-    depth24 = static_cast<uint32_t>(std::nearbyint(double(depth) * 16777215.0));
+    depth24 = static_cast<uint32_t>(double(depth) * 16777215.0);
+  }
+  if (scaleBias) {
+    depth = clamp01(depth * transfer.depthScale + transfer.depthBias);
+    depth24 = static_cast<uint32_t>(double(depth) * 16777215.0);
+  }
+  if (transfer.indexShift != 0 || transfer.indexOffset != 0) {
+    const int shift = transfer.indexShift;
+    stencil = ((shift >= 0 ? stencil << (shift & 31) : stencil >> ((-shift) & 31)) +
+               static_cast<uint32_t>(transfer.indexOffset)) & 0xffu;
   }
   if (format == TexelFormat::Z24 || format == TexelFormat::Z24S8) {
     writeChannel(texel, 4, depth24 | (format == TexelFormat::Z24S8 ? stencil << 24 : 0u));
@@ -364,7 +376,8 @@ void unpackImage(const ClientLayout& layout, const uint8_t* pixels, GLenum forma
       for (int i = 0; i < width; ++i, out += info.bytesPerTexel) {
         float c[4] = {0, 0, 0, 0}, rgba[4];
         if (format == GL_DEPTH_STENCIL) {
-          unpackDepthStencil(row + size_t(i) * layout.groupBytes, type, layout.swapBytes, image.format, out);
+          unpackDepthStencil(row + size_t(i) * layout.groupBytes, type, layout.swapBytes, transfer, image.format,
+                             out);
           continue;
         }
         if (format == GL_COLOR_INDEX) {  // §3.6.5: index arithmetic, then index to RGBA

@@ -282,6 +282,35 @@ TEST_F(DepthStencilTextureTest, UploadsAndReadBacks) {
   EXPECT_EQ(out[5] >> 8, 0xffffffu);
   EXPECT_EQ(out[2], d[2]);
 
+  // Pixel transfer: the depth scale on the depth (stored truncated), the
+  // index offset on the stencil.
+  glPixelTransferf(GL_DEPTH_SCALE, 0.5f);
+  glPixelTransferi(GL_INDEX_OFFSET, 1);
+  glTexImage2D(GL_TEXTURE_2D, 0, kDepth24Stencil8, 4, 4, 0, kDepthStencil, kUnsignedInt24_8, d.data());
+  glPixelTransferf(GL_DEPTH_SCALE, 1.0f);
+  glPixelTransferi(GL_INDEX_OFFSET, 0);
+  glGetTexImage(GL_TEXTURE_2D, 0, kDepthStencil, kUnsignedInt24_8, out);
+  for (int i = 0; i < 16; ++i) EXPECT_EQ(out[i] & 0xff, (d[i] & 0xff) + 1) << i;
+  EXPECT_EQ(out[1] >> 8, 0x088888u);
+  EXPECT_EQ(out[2] >> 8, 0x111111u);
+  EXPECT_EQ(out[15] >> 8, 0x7fffffu);
+  // GL_FLOAT_32_UNSIGNED_INT_24_8_REV: a float depth (clamped, stored
+  // truncated), then a word whose low byte is the stencil.
+  const GLuint f32[8] = {0x3e800000u, 0x12, 0x3f000000u, 0x34, 0x3fc00000u, 0x56, 0xbf800000u, 0x78};
+  glTexImage2D(GL_TEXTURE_2D, 0, kDepth24Stencil8, 2, 2, 0, kDepthStencil, kFloat32UnsignedInt24_8Rev, f32);
+  EXPECT_NO_GL_ERROR();
+  glGetTexImage(GL_TEXTURE_2D, 0, kDepthStencil, kUnsignedInt24_8, out);
+  EXPECT_EQ(out[0], 0x3fffff12u);
+  EXPECT_EQ(out[1], 0x7fffff34u);
+  EXPECT_EQ(out[2], 0xffffff56u);
+  EXPECT_EQ(out[3], 0x00000078u);
+  GLuint undefined = 0;
+  glGenTextures(1, &undefined);
+  glBindTexture(GL_TEXTURE_2D, undefined);
+  glGetTexImage(GL_TEXTURE_2D, 0, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, st);
+  EXPECT_NO_GL_ERROR();  // an undefined level: nothing written, no error
+  texture(GL_TEXTURE_2D);
+
   // A depth texture from depth-stencil data keeps the depth.
   glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT24, 4, 4, 0, kDepthStencil, kUnsignedInt24_8, d.data());
   glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, out);

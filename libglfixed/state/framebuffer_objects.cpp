@@ -405,8 +405,9 @@ void depthView(const FramebufferObject& fb, FramebufferObjects& objects, texture
   };
   // A texture's level as the buffer: Z24S8's words are the framebuffer's
   // Z24_UNORM_S8_UINT, its stencil used when it is the stencil attachment too.
-  // A stencil-only attachment views the words as the renderbuffer case does.
-  auto textureView = [&](const Attachment& a, bool asStencil) {
+  // At the stencil attachment alone: the words' stencil, no depth buffer
+  // (Mesa: GL_DEPTH_BITS 0, no depth test).
+  auto textureView = [&](const Attachment& a, bool asStencil, bool stencilOnly) {
     texture::TextureImage* image = attachedImage(a, textures);
     if (!image || !image->defined() || a.layer >= image->depth) return;
     const bool packed = image->format == texture::TexelFormat::Z24S8;
@@ -414,15 +415,18 @@ void depthView(const FramebufferObject& fb, FramebufferObjects& objects, texture
                      : image->format == texture::TexelFormat::Z24 || packed ? 24
                                                                             : 0;
     if (bits == 0 || (asStencil && !packed)) return;
-    out->view(image->width, image->height, bits, packed && asStencil ? 8 : 0,
-              image->texels.data() + static_cast<size_t>(a.layer) * image->imageStride, nullptr);
+    uint8_t* words = image->texels.data() + static_cast<size_t>(a.layer) * image->imageStride;
+    if (stencilOnly)
+      out->viewPackedStencil(image->width, image->height, words);
+    else
+      out->view(image->width, image->height, bits, packed && asStencil ? 8 : 0, words, nullptr);
   };
   if (fb.depth.type == GL_TEXTURE) {
-    textureView(fb.depth, fb.stencil == fb.depth);
+    textureView(fb.depth, fb.stencil == fb.depth, false);
     return;
   }
   if (fb.depth.type == GL_NONE && fb.stencil.type == GL_TEXTURE) {
-    textureView(fb.stencil, true);
+    textureView(fb.stencil, true, true);
     return;
   }
   Renderbuffer* depth = rbOf(fb.depth);
@@ -435,7 +439,7 @@ void depthView(const FramebufferObject& fb, FramebufferObjects& objects, texture
   }
   if (stencil && stencil->width > 0 && stencil->format.drawable) {
     if (stencil->format.kind == RenderbufferFormat::Kind::kDepthStencil)
-      out->view(stencil->width, stencil->height, 24, 8, stencil->storage.data(), nullptr);
+      out->viewPackedStencil(stencil->width, stencil->height, stencil->storage.data());
     else
       out->view(stencil->width, stencil->height, 0, 8, nullptr, stencil->storage.data());
   }

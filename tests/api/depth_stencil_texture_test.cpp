@@ -453,6 +453,49 @@ TEST_F(DepthStencilTextureTest, AttachmentsAndCompleteness) {
   f.bindFramebuffer(kFramebuffer, 0);
 }
 
+// A depth-stencil texture at the stencil attachment alone: the object has
+// no depth buffer (GL_DEPTH_BITS 0, GL_DEPTH_TEST draws as if disabled),
+// the stencil test works on the texture's stencil and keeps its depth.
+TEST_F(DepthStencilTextureTest, StencilAttachmentAloneHasNoDepth) {
+  std::vector<GLuint> d(64, 0x80000000u | 7);
+  const GLuint ds = texture(GL_TEXTURE_2D);
+  glTexImage2D(GL_TEXTURE_2D, 0, kDepth24Stencil8, 8, 8, 0, kDepthStencil, kUnsignedInt24_8, d.data());
+  const GLuint color = texture(GL_TEXTURE_2D);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 8, 8, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+  GLuint fb = 0;
+  f.genFramebuffers(1, &fb);
+  f.bindFramebuffer(kFramebuffer, fb);
+  f.framebufferTexture2D(kFramebuffer, kColor0, GL_TEXTURE_2D, color, 0);
+  f.framebufferTexture2D(kFramebuffer, kStencilAttachment, GL_TEXTURE_2D, ds, 0);
+  ASSERT_EQ(f.checkFramebufferStatus(kFramebuffer), kComplete);
+  EXPECT_EQ(GetInt(GL_DEPTH_BITS), 0);
+  EXPECT_EQ(GetInt(GL_STENCIL_BITS), 8);
+  glViewport(0, 0, 8, 8);
+  glClearColor(0, 0, 0, 0);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);  // no depth to clear
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_NEVER);
+  glEnable(GL_STENCIL_TEST);
+  glStencilFunc(GL_EQUAL, 7, 0xff);
+  glStencilOp(GL_KEEP, GL_KEEP, GL_INCR);
+  glColor3f(1, 1, 1);
+  glRectf(-1, -1, 1, 1);
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_STENCIL_TEST);
+  GLubyte px[4] = {};
+  glReadPixels(4, 4, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, px);
+  EXPECT_EQ(px[0], 255);
+  GLuint z = 0;
+  glReadPixels(4, 4, 1, 1, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, &z);
+  EXPECT_GL_ERROR(GL_INVALID_OPERATION);
+  f.bindFramebuffer(kFramebuffer, 0);
+  glBindTexture(GL_TEXTURE_2D, ds);
+  glGetTexImage(GL_TEXTURE_2D, 0, kDepthStencil, kUnsignedInt24_8, d.data());
+  EXPECT_EQ(d[36], 0x80000008u);
+  EXPECT_EQ(d[0], 0x80000008u);
+  EXPECT_NO_GL_ERROR();
+}
+
 // A depth-tested, stencilled triangle into a depth-stencil texture, read
 // back, then the texture sampled in the window as luminance and compared.
 TEST_F(DepthStencilTextureTest, RenderIntoThenSample) {

@@ -311,6 +311,22 @@ TEST_F(DepthStencilTextureTest, UploadsAndReadBacks) {
   EXPECT_NO_GL_ERROR();  // an undefined level: nothing written, no error
   texture(GL_TEXTURE_2D);
 
+  // Compiled into a display list, the data is copied at compile time.
+  std::vector<GLuint> listed = Ramp();
+  const GLuint list = glGenLists(1);
+  glNewList(list, GL_COMPILE);
+  glTexImage2D(GL_TEXTURE_2D, 0, kDepth24Stencil8, 4, 4, 0, kDepthStencil, kUnsignedInt24_8, listed.data());
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 1, 1, kDepthStencil, kUnsignedInt24_8, sub);
+  glEndList();
+  listed.assign(16, 0);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+  glCallList(list);
+  EXPECT_NO_GL_ERROR();
+  glGetTexImage(GL_TEXTURE_2D, 0, kDepthStencil, kUnsignedInt24_8, out);
+  EXPECT_EQ(out[0], sub[0]);
+  for (int i = 1; i < 16; ++i) EXPECT_EQ(out[i], d[i]) << i;
+  glDeleteLists(list, 1);
+
   // A depth texture from depth-stencil data keeps the depth.
   glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT24, 4, 4, 0, kDepthStencil, kUnsignedInt24_8, d.data());
   glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, out);

@@ -22,11 +22,11 @@ using texture::TextureObject;
 namespace {
 
 // The checks glTexImage and glTexSubImage share on format and type against
-// the image's base format.
-// EXT_packed_depth_stencil: a depth or depth-stencil image takes
-// GL_DEPTH_COMPONENT and GL_DEPTH_STENCIL data (a depth image keeps the
-// depth of GL_DEPTH_STENCIL data, a depth-stencil one gets an undefined
-// stencil from GL_DEPTH_COMPONENT data, as on Mesa), a colour image neither.
+// the image's base format. EXT_packed_depth_stencil: a depth or
+// depth-stencil image takes GL_DEPTH_COMPONENT and GL_DEPTH_STENCIL data (a
+// depth image keeps the depth of GL_DEPTH_STENCIL data, a depth-stencil one
+// gets an undefined stencil from GL_DEPTH_COMPONENT data, as on Mesa), a
+// colour image neither.
 GLenum checkFormats(GLenum base, GLenum format, GLenum type) {
   if (GLenum e = texture::checkFormatAndType(format, type)) return e;
   if (format == GL_STENCIL_INDEX) return GL_INVALID_OPERATION;
@@ -303,9 +303,8 @@ GLAPI void APIENTRY glGetTexImage(GLenum target, GLint level, GLenum format, GLe
   // image as neither (Mesa).
   const GLenum base = imageBase(image);
   const bool depthImage = base == GL_DEPTH_COMPONENT || base == GL_DEPTH_STENCIL;
-  if (format == GL_STENCIL_INDEX || format == GL_DEPTH_STENCIL) {
-    if (image.defined() && base != GL_DEPTH_STENCIL) return ctx->recordError(GL_INVALID_OPERATION);
-  }
+  if ((format == GL_STENCIL_INDEX || format == GL_DEPTH_STENCIL) && image.defined() && base != GL_DEPTH_STENCIL)
+    return ctx->recordError(GL_INVALID_OPERATION);
   if (!image.defined()) return;  // nothing is written
   if (depthImage != (format == GL_DEPTH_COMPONENT || format == GL_DEPTH_STENCIL || format == GL_STENCIL_INDEX))
     return ctx->recordError(GL_INVALID_OPERATION);

@@ -289,7 +289,6 @@ bool mipmapChainComplete(texture::TextureObject& t) {
   return true;
 }
 
-
 // Mesa's test_attachment_completeness, and whether this library draws into it.
 GLenum attachmentStatus(const Attachment& a, Point point, FramebufferObjects& objects,
                         texture::TextureObjects& textures, int* w, int* h, bool* drawable) {

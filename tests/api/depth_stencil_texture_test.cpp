@@ -512,6 +512,74 @@ TEST_F(DepthStencilTextureTest, StencilAttachmentAloneHasNoDepth) {
   EXPECT_NO_GL_ERROR();
 }
 
+// A cube face as the depth-stencil attachment (cleared and drawn into, the
+// other faces kept), and a 1D depth-stencil texture sampled as intensity.
+TEST_F(DepthStencilTextureTest, CubeFaceAndOneDimensionalTexture) {
+  const std::vector<GLuint> ramp = Ramp();
+  std::vector<GLuint> face(64, 0x12345678u);
+  const GLuint cube = texture(GL_TEXTURE_CUBE_MAP);
+  for (int i = 0; i < 6; ++i)
+    glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + i, 0, kDepth24Stencil8, 8, 8, 0, kDepthStencil, kUnsignedInt24_8,
+                 face.data());
+  const GLuint color = texture(GL_TEXTURE_2D);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 8, 8, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+  GLuint fb = 0;
+  f.genFramebuffers(1, &fb);
+  f.bindFramebuffer(kFramebuffer, fb);
+  f.framebufferTexture2D(kFramebuffer, kColor0, GL_TEXTURE_2D, color, 0);
+  f.framebufferTexture2D(kFramebuffer, kDepthStencilAttachment, GL_TEXTURE_CUBE_MAP_POSITIVE_Y, cube, 0);
+  ASSERT_EQ(f.checkFramebufferStatus(kFramebuffer), kComplete);
+  glViewport(0, 0, 8, 8);
+  glClearDepth(0.25);
+  glClearStencil(9);
+  glClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+  glEnable(GL_DEPTH_TEST);
+  glEnable(GL_STENCIL_TEST);
+  glDepthFunc(GL_ALWAYS);
+  glStencilFunc(GL_ALWAYS, 0x42, 0xff);
+  glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+  glRectf(-1, -1, 0, 0);
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_STENCIL_TEST);
+  glDepthFunc(GL_LESS);
+  f.bindFramebuffer(kFramebuffer, 0);
+  glBindTexture(GL_TEXTURE_CUBE_MAP, cube);
+  std::vector<GLuint> out(64);
+  glGetTexImage(GL_TEXTURE_CUBE_MAP_POSITIVE_Y, 0, kDepthStencil, kUnsignedInt24_8, out.data());
+  EXPECT_EQ(out[0], 0x80000042u);
+  EXPECT_EQ(out[63], 0x40000009u);
+  EXPECT_EQ(Checksum(out.data(), out.size() * 4), 2594056517u);
+  glGetTexImage(GL_TEXTURE_CUBE_MAP_NEGATIVE_Y, 0, kDepthStencil, kUnsignedInt24_8, out.data());
+  EXPECT_EQ(out, face);
+
+  texture(GL_TEXTURE_1D);
+  glTexImage1D(GL_TEXTURE_1D, 0, kDepthStencil, 16, 0, kDepthStencil, kUnsignedInt24_8, ramp.data());
+  glTexParameteri(GL_TEXTURE_1D, GL_DEPTH_TEXTURE_MODE, GL_INTENSITY);
+  glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glEnable(GL_TEXTURE_1D);
+  glViewport(0, 0, 40, 8);
+  glClearColor(0, 0, 0, 0);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glColor3f(1, 1, 1);
+  glBegin(GL_QUADS);
+  glTexCoord1f(0);
+  glVertex2f(-1, -1);
+  glTexCoord1f(1);
+  glVertex2f(1, -1);
+  glTexCoord1f(1);
+  glVertex2f(1, 1);
+  glTexCoord1f(0);
+  glVertex2f(-1, 1);
+  glEnd();
+  glDisable(GL_TEXTURE_1D);
+  std::vector<GLubyte> rgba(40 * 8 * 4);
+  glReadPixels(0, 0, 40, 8, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+  EXPECT_EQ(rgba[39 * 4 + 3], 178);  // intensity: the depth in alpha too
+  EXPECT_EQ(Checksum(rgba.data(), rgba.size()), 2682597989u);
+  EXPECT_NO_GL_ERROR();
+}
+
 // A depth-tested, stencilled triangle into a depth-stencil texture, read
 // back, then the texture sampled in the window as luminance and compared.
 TEST_F(DepthStencilTextureTest, RenderIntoThenSample) {

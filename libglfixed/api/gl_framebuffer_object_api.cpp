@@ -366,7 +366,7 @@ GLAPI void APIENTRY glGetFramebufferAttachmentParameteriv(GLenum target, GLenum 
     const texture::TextureImage* image = attachedImage(a, *ctx->textures);
     if (image && image->defined()) {  // an undefined level: every size 0 (probed)
       const texture::ComponentSizes c = texture::componentSizes(image->format);
-      const int v[6] = {c.red, c.green, c.blue, c.alpha, c.depth, 0};
+      const int v[6] = {c.red, c.green, c.blue, c.alpha, c.depth, c.stencil};
       std::copy(v, v + 6, sizes);
     }
   } else if (const Renderbuffer* rb = ctx->framebufferObjects->findRenderbuffer(a.name)) {
@@ -378,7 +378,12 @@ GLAPI void APIENTRY glGetFramebufferAttachmentParameteriv(GLenum target, GLenum 
   switch (pname) {
     case 0x8210: *params = GL_LINEAR; return;  // GL_FRAMEBUFFER_ATTACHMENT_COLOR_ENCODING
     case 0x8211:  // _COMPONENT_TYPE: unsigned normalized, float for the float renderbuffers (probed)
-      *params = attachment == kStencilAttachment ? GL_UNSIGNED_INT : floatChannels ? GL_FLOAT : 0x8C17;
+      // Of a depth-stencil image at the stencil attachment the depth's, of a
+      // stencil-only one GL_INDEX; at GL_DEPTH_STENCIL_ATTACHMENT an error (probed).
+      if (attachment == kDepthStencilAttachment) return ctx->recordError(GL_INVALID_OPERATION);
+      *params = attachment == kStencilAttachment && sizes[4] == 0 ? 0x8222  // GL_INDEX
+                : floatChannels                                 ? GL_FLOAT
+                                                                : 0x8C17;
       return;
     case 0x8212:
     case 0x8213:

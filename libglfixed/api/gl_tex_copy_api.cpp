@@ -21,11 +21,20 @@ using texture::TextureImage;
 
 namespace {
 
+// What a copy reads: the read buffer's colour, the depth buffer, or depth
+// and stencil (a depth-stencil texture, EXT_packed_depth_stencil).
+enum class Source { kColor, kDepth, kDepthStencil };
+
+Source sourceOf(texture::TexelFormat format) {
+  if (format == texture::TexelFormat::Z24S8) return Source::kDepthStencil;
+  return texture::isDepthFormat(format) ? Source::kDepth : Source::kColor;
+}
+
 // The framebuffer's pixels of a box as tightly packed client data:
-// RGBA bytes, or 32-bit depth values.
-GLenum readBox(const Framebuffer& fb, bool depth, int x, int y, int width, int height,
+// RGBA bytes, 32-bit depth values, or GL_UNSIGNED_INT_24_8 depth-stencil words.
+GLenum readBox(const Framebuffer& fb, Source source, int x, int y, int width, int height,
                std::vector<uint8_t>& out, texture::ClientLayout& layout) {
-  if (depth ? fb.depth.bits() == 0 : !fb.read.pixels) return GL_INVALID_OPERATION;
+  const bool depth = source != Source::kColor;
   out.assign(size_t(width) * height * 4, 0);
   layout = texture::ClientLayout();
   layout.groupBytes = 4;
@@ -41,7 +50,12 @@ GLenum readBox(const Framebuffer& fb, bool depth, int x, int y, int width, int h
       const int sx = x + i;
       if (sx < 0 || sx >= fbWidth) continue;
       uint8_t* p = out.data() + (size_t(j) * width + i) * 4;
-      if (depth) {
+      if (source == Source::kDepthStencil) {
+        const uint32_t v = fb.depth.get(sx, sy);
+        const uint32_t depth24 = fb.depth.bits() == 16 ? (v << 8) | (v >> 8) : v;
+        const uint32_t word = depth24 << 8 | fb.depth.getStencil(sx, sy);
+        std::memcpy(p, &word, 4);
+      } else if (depth) {
         // The depth value widened to 32 bits by repeating its bits.
         const uint32_t v = fb.depth.get(sx, sy);
         const uint32_t wide = fb.depth.bits() == 16 ? (v << 16) | v : (v << 8) | (v >> 16);
@@ -58,19 +72,29 @@ GLenum readBox(const Framebuffer& fb, bool depth, int x, int y, int width, int h
 void copyInto(Context& ctx, TextureImage& image, int xo, int yo, int zo, int x, int y, int width,
               int height) {
   pipeline::flushVertices(ctx);  // what is buffered is drawn before the read
-  const bool depth = texture::texelFormatInfo(image.format).baseFormat == GL_DEPTH_COMPONENT;
+  const Source source = sourceOf(image.format);
   std::vector<uint8_t> pixels;
   texture::ClientLayout layout;
-  if (GLenum e = readBox(ctx.framebuffer, depth, x, y, width, height, pixels, layout))
+  if (GLenum e = readBox(ctx.framebuffer, source, x, y, width, height, pixels, layout))
     return ctx.recordError(e);
   api::beginStateChange(ctx, GL_TEXTURE_BIT);
-  texture::unpackImage(layout, pixels.data(), depth ? GL_DEPTH_COMPONENT : GL_RGBA,
-                       depth ? GL_UNSIGNED_INT : GL_UNSIGNED_BYTE, ctx.pixelMode, width, height, 1, image, xo,
-                       yo, zo, &ctx.pixelMaps);  // the colour maps too (measured)
+  const GLenum format = source == Source::kColor   ? GL_RGBA
+                        : source == Source::kDepth ? GL_DEPTH_COMPONENT
+                                                   : GL_DEPTH_STENCIL;
+  const GLenum type = source == Source::kColor   ? GL_UNSIGNED_BYTE
+                      : source == Source::kDepth ? GL_UNSIGNED_INT
+                                                 : GL_UNSIGNED_INT_24_8;
+  texture::unpackImage(layout, pixels.data(), format, type, ctx.pixelMode, width, height, 1, image, xo, yo, zo,
+                       &ctx.pixelMaps);  // the colour maps too (measured)
 }
 
-bool hasSourceBuffer(const Framebuffer& fb, bool depth) {
-  return depth ? fb.depth.bits() != 0 : fb.read.pixels != nullptr;
+// A depth-stencil texture needs both buffers (GL_INVALID_OPERATION otherwise).
+bool hasSourceBuffer(const Framebuffer& fb, Source source) {
+  switch (source) {
+    case Source::kColor: return fb.read.pixels != nullptr;
+    case Source::kDepth: return fb.depth.bits() != 0;
+    default: return fb.depth.bits() != 0 && fb.depth.stencilBits() != 0;
+  }
 }
 
 void copyTexImage(int dims, GLenum target, GLint level, GLenum internalFormat, GLint x, GLint y,
@@ -90,12 +114,12 @@ void copyTexImage(int dims, GLenum target, GLint level, GLenum internalFormat, G
   const int w = width - 2 * border, h = dims == 2 ? height - 2 * border : 1;
   const int limit = maxSize(t.index) >> level;
   if (w < 0 || h < 0 || w > limit || h > limit) return ctx->recordError(GL_INVALID_VALUE);
-  const bool depth = base == GL_DEPTH_COMPONENT;
+  const bool depth = base == GL_DEPTH_COMPONENT || base == GL_DEPTH_STENCIL;
   if (ctx->objectBound() && !readFramebufferComplete(*ctx)) return;  // GL 3.0 §4.4.4
-  if (!hasSourceBuffer(ctx->framebuffer, depth)) return ctx->recordError(GL_INVALID_OPERATION);
   // The stored format as for client data of the framebuffer's type.
   const texture::TexelFormat stored = texture::chooseTexelFormat(
       internal, depth ? GL_DEPTH_COMPONENT : GL_RGBA, depth ? GL_UNSIGNED_INT : GL_UNSIGNED_BYTE);
+  if (!hasSourceBuffer(ctx->framebuffer, sourceOf(stored))) return ctx->recordError(GL_INVALID_OPERATION);
   if (texture::llvmpipeImageBytes(stored, w, h, 1) > texture::kMaxImageBytes)
     return ctx->recordError(GL_OUT_OF_MEMORY);
   pipeline::flushVertices(*ctx);
@@ -122,9 +146,8 @@ void copyTexSubImage(int dims, GLenum target, GLint level, GLint xo, GLint yo, G
   if (xo < 0 || yo < 0 || zo < 0 || int64_t(xo) + width > image.width ||
       int64_t(yo) + height > image.height || zo >= image.depth)
     return ctx->recordError(GL_INVALID_VALUE);
-  const bool depth = texture::texelFormatInfo(image.format).baseFormat == GL_DEPTH_COMPONENT;
   if (ctx->objectBound() && !readFramebufferComplete(*ctx)) return;  // GL 3.0 §4.4.4
-  if (!hasSourceBuffer(ctx->framebuffer, depth)) return ctx->recordError(GL_INVALID_OPERATION);
+  if (!hasSourceBuffer(ctx->framebuffer, sourceOf(image.format))) return ctx->recordError(GL_INVALID_OPERATION);
   if (width == 0 || height == 0) return;
   copyInto(*ctx, image, xo, yo, zo, x, y, width, height);
   maybeGenerateMipmaps(*ctx, object, t, level);

@@ -22,12 +22,24 @@ using texture::TextureObject;
 namespace {
 
 // The checks glTexImage and glTexSubImage share on format and type against
-// the image's base format.
+// the image's base format. EXT_packed_depth_stencil: a depth or
+// depth-stencil image takes GL_DEPTH_COMPONENT and GL_DEPTH_STENCIL data (a
+// depth image keeps the depth of GL_DEPTH_STENCIL data, a depth-stencil one
+// gets an undefined stencil from GL_DEPTH_COMPONENT data, as on Mesa), a
+// colour image neither.
 GLenum checkFormats(GLenum base, GLenum format, GLenum type) {
   if (GLenum e = texture::checkFormatAndType(format, type)) return e;
   if (format == GL_STENCIL_INDEX) return GL_INVALID_OPERATION;
-  if ((base == GL_DEPTH_COMPONENT) != (format == GL_DEPTH_COMPONENT)) return GL_INVALID_OPERATION;
+  const bool depthBase = base == GL_DEPTH_COMPONENT || base == GL_DEPTH_STENCIL;
+  const bool depthData = format == GL_DEPTH_COMPONENT || format == GL_DEPTH_STENCIL;
+  if (depthBase != depthData) return GL_INVALID_OPERATION;
   return GL_NO_ERROR;
+}
+
+// The base format of a stored image, GL_DEPTH_STENCIL for a depth-stencil one.
+GLenum imageBase(const TextureImage& image) {
+  return image.format == texture::TexelFormat::Z24S8 ? GL_DEPTH_STENCIL
+                                                     : texture::texelFormatInfo(image.format).baseFormat;
 }
 
 // GL 2.1 §3.8.1: a one- or two-dimensional image ignores GL_UNPACK_SKIP_IMAGES
@@ -52,7 +64,8 @@ void texImage(int dims, GLenum target, GLint level, GLint internalFormat, GLsize
   const GLenum base = texture::baseInternalFormat(internalFormat);
   if (base == 0) return ctx->recordError(GL_INVALID_VALUE);
   if (GLenum e = checkFormats(base, format, type)) return ctx->recordError(e);
-  if (base == GL_DEPTH_COMPONENT && t.index == 2) return ctx->recordError(GL_INVALID_OPERATION);
+  if ((base == GL_DEPTH_COMPONENT || base == GL_DEPTH_STENCIL) && t.index == 2)
+    return ctx->recordError(GL_INVALID_OPERATION);  // no 3D depth textures (Mesa)
   if (t.index == 3 && width != height) return ctx->recordError(GL_INVALID_VALUE);  // cube faces are square
 
   // The stored size: Mesa strips the border before llvmpipe sees the image.
@@ -109,7 +122,7 @@ void texSubImage(int dims, GLenum target, GLint level, GLint x, GLint y, GLint z
   TextureObject& object = targetObject(*ctx, t);
   TextureImage& image = object.face[t.face][level];
   if (!image.defined()) return ctx->recordError(GL_INVALID_OPERATION);
-  if (GLenum e = checkFormats(texture::texelFormatInfo(image.format).baseFormat, format, type))
+  if (GLenum e = checkFormats(imageBase(image), format, type))
     return ctx->recordError(e);
   if (width < 0 || height < 0 || depth < 0) return ctx->recordError(GL_INVALID_VALUE);
   if (x < 0 || y < 0 || z < 0 || int64_t(x) + width > image.width || int64_t(y) + height > image.height ||
@@ -283,12 +296,18 @@ GLAPI void APIENTRY glGetTexImage(GLenum target, GLint level, GLenum format, GLe
   if (!imageTarget(target, dims, false, t)) return ctx->recordError(GL_INVALID_ENUM);
   if (level < 0 || level >= maxLevels(t.index)) return ctx->recordError(GL_INVALID_VALUE);
   if (GLenum e = texture::checkFormatAndType(format, type)) return ctx->recordError(e);
-  if (type == GL_BITMAP || format == GL_COLOR_INDEX || format == GL_STENCIL_INDEX)
-    return ctx->recordError(GL_INVALID_OPERATION);
+  if (type == GL_BITMAP || format == GL_COLOR_INDEX) return ctx->recordError(GL_INVALID_OPERATION);
   const TextureImage& image = targetObject(*ctx, t).face[t.face][level];
+  // A depth-stencil image reads as GL_DEPTH_STENCIL, GL_DEPTH_COMPONENT or
+  // GL_STENCIL_INDEX, a depth image as GL_DEPTH_COMPONENT only, a colour
+  // image as neither (Mesa).
+  const GLenum base = imageBase(image);
+  const bool depthImage = base == GL_DEPTH_COMPONENT || base == GL_DEPTH_STENCIL;
+  if ((format == GL_STENCIL_INDEX || format == GL_DEPTH_STENCIL) && image.defined() && base != GL_DEPTH_STENCIL)
+    return ctx->recordError(GL_INVALID_OPERATION);
   if (!image.defined()) return;  // nothing is written
-  const bool depthImage = texture::texelFormatInfo(image.format).baseFormat == GL_DEPTH_COMPONENT;
-  if (depthImage != (format == GL_DEPTH_COMPONENT)) return ctx->recordError(GL_INVALID_OPERATION);
+  if (depthImage != (format == GL_DEPTH_COMPONENT || format == GL_DEPTH_STENCIL || format == GL_STENCIL_INDEX))
+    return ctx->recordError(GL_INVALID_OPERATION);
   const texture::ClientLayout layout =
       texture::packLayout(storeFor(ctx->pixelStore, dims), image.width, image.height, format, type);
   const size_t extent = layout.extent(image.width, image.height, image.depth);
@@ -353,9 +372,7 @@ GLAPI void APIENTRY glGetTexLevelParameteriv(GLenum target, GLint level, GLenum 
     case GL_TEXTURE_LUMINANCE_SIZE: v = sizes.luminance; break;
     case GL_TEXTURE_INTENSITY_SIZE: v = sizes.intensity; break;
     case GL_TEXTURE_DEPTH_SIZE: v = sizes.depth; break;
-    // EXT_packed_depth_stencil's name (Mesa answers it): no stored format has
-    // stencil bits.
-    case 0x88F1: v = 0; break;  // GL_TEXTURE_STENCIL_SIZE
+    case 0x88F1: v = sizes.stencil; break;  // GL_TEXTURE_STENCIL_SIZE (EXT_packed_depth_stencil)
     case GL_TEXTURE_COMPRESSED: v = GL_FALSE; break;  // stored uncompressed
     case GL_TEXTURE_COMPRESSED_IMAGE_SIZE:
       // Not a compressed image (GL 2.1 §6.1.3).
@@ -386,6 +403,8 @@ GLAPI void APIENTRY glGenerateMipmap(GLenum target) {
     }
   }
   if (!object.face[0][base].defined()) return;
+  // No mipmaps of a depth-stencil texture (Mesa; GL_GENERATE_MIPMAP makes them).
+  if (object.face[0][base].format == texture::TexelFormat::Z24S8) return ctx->recordError(GL_INVALID_OPERATION);
   api::beginStateChange(*ctx, GL_TEXTURE_BIT);
   for (int f = 0; f < faces; ++f)
     if (!texture::generateMipmaps(object, f, base, maxLevels(index)))

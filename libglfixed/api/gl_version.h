@@ -6,9 +6,8 @@
 // the last one without shaders. Blending and the logic op
 // (fragment/blend.inc), the stencil test, fog (fragment/fog.inc) and most
 // pixel rectangles are here; so are framebuffer objects (ARB and
-// EXT_framebuffer_object, EXT_framebuffer_blit). EXT_packed_depth_stencil is
-// not named: DEPTH_STENCIL textures, glDrawPixels and glCopyPixels of
-// GL_DEPTH_STENCIL are not here yet (its renderbuffers and glReadPixels are).
+// EXT_framebuffer_object, EXT_framebuffer_blit), with EXT_packed_depth_stencil
+// (renderbuffers, textures, and the pixel commands of GL_DEPTH_STENCIL).
 // The extensions listed are those whose every command and enum works.
 #pragma once
 
@@ -31,7 +30,7 @@ constexpr const char* kGLExtensionsString =
     "GL_EXT_blend_color GL_EXT_blend_equation_separate GL_EXT_blend_func_separate GL_EXT_blend_minmax "
     "GL_EXT_blend_subtract GL_EXT_copy_texture "
     "GL_EXT_draw_range_elements GL_EXT_fog_coord GL_EXT_framebuffer_blit GL_EXT_framebuffer_object "
-    "GL_EXT_multi_draw_arrays GL_EXT_packed_pixels GL_EXT_pixel_buffer_object "
+    "GL_EXT_multi_draw_arrays GL_EXT_packed_depth_stencil GL_EXT_packed_pixels GL_EXT_pixel_buffer_object "
     "GL_EXT_point_parameters GL_EXT_provoking_vertex GL_EXT_rescale_normal GL_EXT_separate_specular_color "
     "GL_EXT_shadow_funcs GL_EXT_stencil_two_side GL_EXT_stencil_wrap GL_EXT_subtexture "
     "GL_EXT_texture GL_EXT_texture3D GL_EXT_texture_edge_clamp GL_EXT_texture_env_add "

@@ -7,6 +7,14 @@
 #include "texture/texture_image.h"
 #include "texture/texture_objects.h"
 
+// EXT_packed_depth_stencil (not in GL 2.1's gl.h).
+#ifndef GL_DEPTH_STENCIL
+#define GL_DEPTH_STENCIL 0x84F9
+#endif
+#ifndef GL_UNSIGNED_INT_24_8
+#define GL_UNSIGNED_INT_24_8 0x84FA
+#endif
+
 namespace glfixed::api::teximage {
 
 // What an image target names: the object's target index, the cube face,

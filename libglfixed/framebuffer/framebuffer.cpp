@@ -229,6 +229,7 @@ void Framebuffer::selectBuffers(GLenum drawBuffer, GLenum readBuffer) {
 DepthBuffer& DepthBuffer::operator=(const DepthBuffer& o) {
   if (this == &o) return *this;
   bits_ = o.bits_;
+  depthless_ = o.depthless_;
   stencilBits_ = o.stencilBits_;
   width_ = o.width_;
   height_ = o.height_;
@@ -252,6 +253,7 @@ DepthBuffer& DepthBuffer::operator=(const DepthBuffer& o) {
 DepthBuffer& DepthBuffer::operator=(DepthBuffer&& o) noexcept {
   if (this == &o) return *this;
   bits_ = o.bits_;
+  depthless_ = o.depthless_;
   stencilBits_ = o.stencilBits_;
   width_ = o.width_;
   height_ = o.height_;
@@ -278,6 +280,7 @@ void DepthBuffer::pointAtOwnStorage() {
 
 void DepthBuffer::resize(int width, int height, int bits, int stencilBits) {
   bits_ = bits;
+  depthless_ = false;
   stencilBits_ = stencilBits > 0 ? 8 : 0;
   width_ = width;
   height_ = height;
@@ -294,6 +297,7 @@ void DepthBuffer::view(int width, int height, int bits, int stencilBits, void* d
   own32_.clear();
   own8_.clear();
   bits_ = bits;
+  depthless_ = false;
   stencilBits_ = stencilBits > 0 ? 8 : 0;
   width_ = width;
   height_ = height;

@@ -136,10 +136,19 @@ class DepthBuffer {
   // bits, the stencil in the top byte when packed) a value, `stencil8` one
   // byte a value without depth; rows of `width` values from the bottom up.
   void view(int width, int height, int bits, int stencilBits, void* depth, uint8_t* stencil8);
+  // The stencil of Z24S8 words alone: a depth-stencil image at a framebuffer
+  // object's stencil attachment with nothing at its depth attachment. The
+  // buffer has no depth (bits() 0: no depth test, clear or read), the words'
+  // depth bits are kept.
+  void viewPackedStencil(int width, int height, void* words) {
+    view(width, height, 24, 8, words, nullptr);
+    depthless_ = true;
+  }
   void viewOf(DepthBuffer& owner) {
     view(owner.width_, owner.height_, owner.bits_, owner.stencilBits_, owner.data(), owner.stencil8());
+    depthless_ = owner.depthless_;
   }
-  int bits() const { return bits_; }
+  int bits() const { return depthless_ ? 0 : bits_; }
   int stencilBits() const { return stencilBits_; }
   // The stencil is the top byte of the depth words (else, with stencil
   // bits, in stencil8()).
@@ -186,8 +195,9 @@ class DepthBuffer {
  private:
   void pointAtOwnStorage();
   size_t count() const { return static_cast<size_t>(width_) * height_; }
-  int bits_ = 0, stencilBits_ = 0, width_ = 0, height_ = 0;
+  int bits_ = 0, stencilBits_ = 0, width_ = 0, height_ = 0;  // bits_: the layout (24 when depthless_)
   bool isView_ = false;
+  bool depthless_ = false;
   std::vector<uint16_t> own16_;
   std::vector<uint32_t> own32_;
   std::vector<uint8_t> own8_;

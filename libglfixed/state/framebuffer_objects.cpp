@@ -289,10 +289,6 @@ bool mipmapChainComplete(texture::TextureObject& t) {
   return true;
 }
 
-bool isDepthTexel(texture::TexelFormat f) {
-  return f == texture::TexelFormat::Z16 || f == texture::TexelFormat::Z24 || f == texture::TexelFormat::Z32;
-}
-
 // Mesa's test_attachment_completeness, and whether this library draws into it.
 GLenum attachmentStatus(const Attachment& a, Point point, FramebufferObjects& objects,
                         texture::TextureObjects& textures, int* w, int* h, bool* drawable) {
@@ -303,7 +299,7 @@ GLenum attachmentStatus(const Attachment& a, Point point, FramebufferObjects& ob
     if (a.layer >= image->depth) return kIncompleteAttachment;
     texture::TextureObject* t = textures.find(a.name);
     if (t && a.level > t->params.baseLevel && !mipmapChainComplete(*t)) return kIncompleteAttachment;
-    const bool depthFormat = isDepthTexel(image->format);
+    const bool depthFormat = texture::isDepthFormat(image->format);
     switch (point) {
       case Point::kColor:
         if (depthFormat) return kIncompleteAttachment;
@@ -313,7 +309,10 @@ GLenum attachmentStatus(const Attachment& a, Point point, FramebufferObjects& ob
         if (!depthFormat) return kIncompleteAttachment;
         *drawable = image->format != texture::TexelFormat::Z32;
         break;
-      case Point::kStencil: return kIncompleteAttachment;  // no depth-stencil textures here
+      case Point::kStencil:  // a depth-stencil texture only (EXT_packed_depth_stencil)
+        if (image->format != texture::TexelFormat::Z24S8) return kIncompleteAttachment;
+        *drawable = true;
+        break;
     }
     *w = image->width;
     *h = image->height;
@@ -403,15 +402,30 @@ void depthView(const FramebufferObject& fb, FramebufferObjects& objects, texture
   auto rbOf = [&](const Attachment& a) -> Renderbuffer* {
     return a.type == kRenderbuffer ? objects.findRenderbuffer(a.name) : nullptr;
   };
+  // A texture's level as the buffer: Z24S8's words are the framebuffer's
+  // Z24_UNORM_S8_UINT, its stencil used when it is the stencil attachment too.
+  // At the stencil attachment alone: the words' stencil, no depth buffer
+  // (Mesa: GL_DEPTH_BITS 0, no depth test).
+  auto textureView = [&](const Attachment& a, bool asStencil, bool stencilOnly) {
+    texture::TextureImage* image = attachedImage(a, textures);
+    if (!image || !image->defined() || a.layer >= image->depth) return;
+    const bool packed = image->format == texture::TexelFormat::Z24S8;
+    const int bits = image->format == texture::TexelFormat::Z16 ? 16
+                     : image->format == texture::TexelFormat::Z24 || packed ? 24
+                                                                            : 0;
+    if (bits == 0 || (asStencil && !packed)) return;
+    uint8_t* words = image->texels.data() + static_cast<size_t>(a.layer) * image->imageStride;
+    if (stencilOnly)
+      out->viewPackedStencil(image->width, image->height, words);
+    else
+      out->view(image->width, image->height, bits, packed && asStencil ? 8 : 0, words, nullptr);
+  };
   if (fb.depth.type == GL_TEXTURE) {
-    texture::TextureImage* image = attachedImage(fb.depth, textures);
-    if (!image || !image->defined() || fb.depth.layer >= image->depth) return;
-    const int bits = image->format == texture::TexelFormat::Z16   ? 16
-                     : image->format == texture::TexelFormat::Z24 ? 24
-                                                                  : 0;
-    if (bits == 0) return;
-    out->view(image->width, image->height, bits, 0,
-              image->texels.data() + static_cast<size_t>(fb.depth.layer) * image->imageStride, nullptr);
+    textureView(fb.depth, fb.stencil == fb.depth, false);
+    return;
+  }
+  if (fb.depth.type == GL_NONE && fb.stencil.type == GL_TEXTURE) {
+    textureView(fb.stencil, true, true);
     return;
   }
   Renderbuffer* depth = rbOf(fb.depth);
@@ -424,7 +438,7 @@ void depthView(const FramebufferObject& fb, FramebufferObjects& objects, texture
   }
   if (stencil && stencil->width > 0 && stencil->format.drawable) {
     if (stencil->format.kind == RenderbufferFormat::Kind::kDepthStencil)
-      out->view(stencil->width, stencil->height, 24, 8, stencil->storage.data(), nullptr);
+      out->viewPackedStencil(stencil->width, stencil->height, stencil->storage.data());
     else
       out->view(stencil->width, stencil->height, 0, 8, nullptr, stencil->storage.data());
   }

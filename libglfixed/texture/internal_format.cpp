@@ -1,5 +1,12 @@
 #include "texture/internal_format.h"
 
+#ifndef GL_DEPTH_STENCIL
+#define GL_DEPTH_STENCIL 0x84F9  // EXT_packed_depth_stencil (not in GL 2.1's gl.h)
+#endif
+#ifndef GL_DEPTH24_STENCIL8
+#define GL_DEPTH24_STENCIL8 0x88F0
+#endif
+
 namespace glfixed::texture {
 
 GLenum baseInternalFormat(GLint internalFormat) {
@@ -68,6 +75,8 @@ GLenum baseInternalFormat(GLint internalFormat) {
     case GL_DEPTH_COMPONENT16:
     case GL_DEPTH_COMPONENT24:
     case GL_DEPTH_COMPONENT32: return GL_DEPTH_COMPONENT;
+    case GL_DEPTH_STENCIL:
+    case GL_DEPTH24_STENCIL8: return GL_DEPTH_STENCIL;
     default: return 0;
   }
 }
@@ -134,6 +143,8 @@ TexelFormat chooseTexelFormat(GLint internalFormat, GLenum format, GLenum type) 
     case GL_DEPTH_COMPONENT16: return TexelFormat::Z16;
     case GL_DEPTH_COMPONENT24: return TexelFormat::Z24;
     case GL_DEPTH_COMPONENT32: return TexelFormat::Z32;
+    case GL_DEPTH_STENCIL:
+    case GL_DEPTH24_STENCIL8: return TexelFormat::Z24S8;
     case GL_LUMINANCE12:
     case GL_LUMINANCE16: return TexelFormat::L16;
     case GL_ALPHA12:

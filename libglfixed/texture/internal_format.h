@@ -11,7 +11,8 @@
 namespace glfixed::texture {
 
 // The base internal format of an internal format (GL_RGBA, GL_RGB,
-// GL_LUMINANCE, ... or GL_DEPTH_COMPONENT); 0 if it is not one of GL 2.1's.
+// GL_LUMINANCE, ... GL_DEPTH_COMPONENT, or EXT_packed_depth_stencil's
+// GL_DEPTH_STENCIL); 0 if it is not one of those.
 GLenum baseInternalFormat(GLint internalFormat);
 
 // The stored format. For the unsized GL_RGB, GL_RGBA and GL_DEPTH_COMPONENT

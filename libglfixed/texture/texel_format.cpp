@@ -36,6 +36,7 @@ const TexelFormatInfo kInfo[] = {
     {2, false, GL_DEPTH_COMPONENT, 1, 2, {16, 0, 0, 0}},   // Z16
     {4, false, GL_DEPTH_COMPONENT, 1, 4, {24, 0, 0, 0}},   // Z24
     {4, false, GL_DEPTH_COMPONENT, 1, 4, {32, 0, 0, 0}},   // Z32
+    {4, false, GL_DEPTH_COMPONENT, 1, 4, {24, 0, 0, 0}},   // Z24S8 (the stencil byte is not a channel)
     {4, true, GL_RGBA, 4, 1, {8, 8, 8, 8}, true},          // SRGBA8
     {4, true, GL_RGB, 4, 1, {8, 8, 8, 0}, true},           // SRGBX8
     {1, true, GL_LUMINANCE, 1, 1, {8, 0, 0, 0}, true},     // SL8
@@ -97,7 +98,9 @@ uint32_t storedChannel(TexelFormat format, const uint8_t* texel, int c) {
   switch (info.bytesPerChannel) {
     case 1: return p[0];
     case 2: return uint32_t(p[0]) | uint32_t(p[1]) << 8;
-    default: return uint32_t(p[0]) | uint32_t(p[1]) << 8 | uint32_t(p[2]) << 16 | uint32_t(p[3]) << 24;
+    default:
+      if (format == TexelFormat::Z24S8) return uint32_t(p[0]) | uint32_t(p[1]) << 8 | uint32_t(p[2]) << 16;
+      return uint32_t(p[0]) | uint32_t(p[1]) << 8 | uint32_t(p[2]) << 16 | uint32_t(p[3]) << 24;
   }
 }
 
@@ -113,6 +116,7 @@ ComponentSizes componentSizes(TexelFormat format) {
     case GL_INTENSITY: s.intensity = info.bits[0]; break;
     case GL_DEPTH_COMPONENT: s.depth = info.bits[0]; break;
   }
+  if (format == TexelFormat::Z24S8) s.stencil = 8;
   return s;
 }
 

@@ -42,6 +42,12 @@ enum class TexelFormat : uint8_t {
   Z16,  // depth, one channel: 2 bytes
   Z24,  // 4 bytes, the value in the low 24 bits
   Z32,  // 4 bytes, 32-bit unsigned normalized
+  // GL_DEPTH_STENCIL, GL_DEPTH24_STENCIL8 (EXT_packed_depth_stencil): Z24's
+  // word with the stencil index in the top byte, the layout of the
+  // framebuffer's Z24_UNORM_S8_UINT (framebuffer/framebuffer.h), so an
+  // attached texture is drawn into as a depth-stencil buffer. Its one channel
+  // is the depth: sampled as Z24 is (llvmpipe samples Z24_UNORM_S8_UINT's depth).
+  Z24S8,
   // sRGB-encoded 8-bit colour channels (alpha linear), decoded to linear
   // when sampled (EXT_texture_sRGB; Mesa decodes them: MESA_FACTS.md
   // "Textures: sampling").
@@ -66,14 +72,23 @@ struct TexelFormatInfo {
 
 // The component sizes glGetTexLevelParameter reports (GL_TEXTURE_RED_SIZE ...).
 struct ComponentSizes {
-  int red = 0, green = 0, blue = 0, alpha = 0, luminance = 0, intensity = 0, depth = 0;
+  int red = 0, green = 0, blue = 0, alpha = 0, luminance = 0, intensity = 0, depth = 0, stencil = 0;
 };
 ComponentSizes componentSizes(TexelFormat format);
 
-// The stored value of channel `c` of one texel.
+// The stored value of channel `c` of one texel (Z24S8's depth without the
+// stencil byte).
 uint32_t storedChannel(TexelFormat format, const uint8_t* texel, int c);
 
 const TexelFormatInfo& texelFormatInfo(TexelFormat format);
+
+// A depth format (base format GL_DEPTH_COMPONENT: Z16, Z24, Z32, Z24S8).
+inline bool isDepthFormat(TexelFormat format) {
+  return format == TexelFormat::Z16 || format == TexelFormat::Z24 || format == TexelFormat::Z32 ||
+         format == TexelFormat::Z24S8;
+}
+// The stencil index of a Z24S8 texel.
+inline uint8_t texelStencil(const uint8_t* texel) { return texel[3]; }
 
 // One texel as 8-bit RGBA (only for fitsUnorm8 formats), the base format's
 // mapping applied.

@@ -4,14 +4,30 @@
 #include <cmath>
 #include <cstring>
 
+// EXT_packed_depth_stencil and ARB_depth_buffer_float (not in GL 2.1's gl.h).
+#ifndef GL_DEPTH_STENCIL
+#define GL_DEPTH_STENCIL 0x84F9
+#endif
+#ifndef GL_UNSIGNED_INT_24_8
+#define GL_UNSIGNED_INT_24_8 0x84FA
+#endif
+#ifndef GL_FLOAT_32_UNSIGNED_INT_24_8_REV
+#define GL_FLOAT_32_UNSIGNED_INT_24_8_REV 0x8DAD
+#endif
+
 namespace glfixed::texture {
 
 namespace {
+
+bool isDepthStencilType(GLenum type) {
+  return type == GL_UNSIGNED_INT_24_8 || type == GL_FLOAT_32_UNSIGNED_INT_24_8_REV;
+}
 
 int componentsOf(GLenum format) {
   switch (format) {
     case GL_COLOR_INDEX:
     case GL_STENCIL_INDEX:
+    case GL_DEPTH_STENCIL:  // one group of a depth-stencil type
     case GL_DEPTH_COMPONENT:
     case GL_RED:
     case GL_GREEN:
@@ -61,7 +77,9 @@ int elementBytes(GLenum type) {
     case GL_SHORT: return 2;
     case GL_UNSIGNED_INT:
     case GL_INT:
-    case GL_FLOAT: return 4;
+    case GL_FLOAT:
+    case GL_UNSIGNED_INT_24_8:
+    case GL_FLOAT_32_UNSIGNED_INT_24_8_REV: return 4;  // (two of them a group)
     default: return packedType(type).bytes;
   }
 }
@@ -81,6 +99,7 @@ ClientLayout layoutOf(int alignment, int rowLength, int skipPixels, int skipRows
     const Packed packed = packedType(type);
     l.elementBytes = elementBytes(type);
     l.groupBytes = packed.bytes ? packed.bytes : static_cast<size_t>(componentsOf(format)) * l.elementBytes;
+    if (type == GL_FLOAT_32_UNSIGNED_INT_24_8_REV) l.groupBytes = 8;  // a float depth, then the stencil word
     l.rowStride = rowPixels * l.groupBytes;
     if (static_cast<size_t>(l.elementBytes) < align) l.rowStride = (l.rowStride + align - 1) / align * align;
     l.start = static_cast<size_t>(skipPixels) * l.groupBytes;
@@ -204,6 +223,10 @@ void storeChannels(TexelFormat format, const float c[4], bool fromBytes, uint8_t
     } else if (bits <= 16) {
       // Mesa's _mesa_float_to_unorm: round to nearest even, in float.
       v = static_cast<uint32_t>(std::nearbyint(f * static_cast<float>((1u << bits) - 1)));
+    } else if (bits == 24 && info.baseFormat == GL_DEPTH_COMPONENT) {
+      // Mesa's 24-bit depth store (Z24X8 and Z24_UNORM_S8_UINT alike) truncates:
+      // 0.25 stores 0x3fffff (measured).
+      v = static_cast<uint32_t>(double(f) * 16777215.0);
     } else {
       const double max = bits == 32 ? 4294967295.0 : double((1u << bits) - 1);
       v = static_cast<uint32_t>(std::nearbyint(double(f) * max));
@@ -232,6 +255,11 @@ GLenum checkFormatAndType(GLenum format, GLenum type) {
   if (type == GL_BITMAP)
     return format == GL_COLOR_INDEX || format == GL_STENCIL_INDEX ? GL_NO_ERROR : GL_INVALID_ENUM;
   if (elementBytes(type) == 0) return GL_INVALID_ENUM;
+  // EXT_packed_depth_stencil (and ARB_depth_buffer_float's type): the format
+  // only with its types (else GL_INVALID_ENUM), the types only with it
+  // (else GL_INVALID_OPERATION), as Mesa answers.
+  if (format == GL_DEPTH_STENCIL) return isDepthStencilType(type) ? GL_NO_ERROR : GL_INVALID_ENUM;
+  if (isDepthStencilType(type)) return GL_INVALID_OPERATION;
   const Packed packed = packedType(type);
   if (packed.bytes && packed.fields != componentsOf(format)) return GL_INVALID_OPERATION;
   // The three-field types take GL_RGB only (GL 2.1 table 3.8; Mesa refuses GL_BGR).
@@ -330,6 +358,44 @@ void copyBytes(const ByteCopy& copy, const uint8_t* in, size_t inStride, uint8_t
     }
 }
 
+// One GL_DEPTH_STENCIL group into a depth (or depth-stencil) texel: Z24 and
+// Z24S8 take the 24 bits as they are (Mesa's texstore copies them; the
+// stencil only where the texture has one), the other depth formats the
+// depth as a value in [0, 1]. Pixel transfer (§3.6.5) as Mesa applies it:
+// the depth scale and bias to the depth as a float, stored truncated (0.5
+// stores 0x111111 as 0x088888), GL_INDEX_SHIFT and _OFFSET to the stencil.
+void unpackDepthStencil(const uint8_t* p, GLenum type, bool swap, const PixelModeAttrib& transfer,
+                        TexelFormat format, uint8_t* texel) {
+  uint32_t depth24, stencil;
+  float depth;
+  const bool scaleBias = transfer.depthScale != 1 || transfer.depthBias != 0;
+  if (type == GL_UNSIGNED_INT_24_8) {
+    const uint32_t v = readElement(p, 4, swap);
+    depth24 = v >> 8;
+    stencil = v & 0xffu;
+    depth = static_cast<float>(depth24) / 16777215.0f;
+  } else {  // GL_FLOAT_32_UNSIGNED_INT_24_8_REV: truncated to 24 bits (0.25 stores 0x3fffff)
+    depth = clamp01(elementToFloat(readElement(p, 4, swap), GL_FLOAT));
+    stencil = readElement(p + 4, 4, swap) & 0xffu;
+    depth24 = static_cast<uint32_t>(double(depth) * 16777215.0);
+  }
+  if (scaleBias) {
+    depth = clamp01(depth * transfer.depthScale + transfer.depthBias);
+    depth24 = static_cast<uint32_t>(double(depth) * 16777215.0);
+  }
+  if (transfer.indexShift != 0 || transfer.indexOffset != 0) {
+    const int shift = transfer.indexShift;
+    stencil = ((shift >= 0 ? stencil << (shift & 31) : stencil >> ((-shift) & 31)) +
+               static_cast<uint32_t>(transfer.indexOffset)) & 0xffu;
+  }
+  if (format == TexelFormat::Z24 || format == TexelFormat::Z24S8) {
+    writeChannel(texel, 4, depth24 | (format == TexelFormat::Z24S8 ? stencil << 24 : 0u));
+    return;
+  }
+  const float c[4] = {depth, 0, 0, 0};
+  storeChannels(format, c, false, texel);
+}
+
 }  // namespace
 
 void unpackImage(const ClientLayout& layout, const uint8_t* pixels, GLenum format, GLenum type,
@@ -371,6 +437,11 @@ void unpackImage(const ClientLayout& layout, const uint8_t* pixels, GLenum forma
                      size_t(y + j) * image.rowStride + size_t(x) * info.bytesPerTexel;
       for (int i = 0; i < width; ++i, out += info.bytesPerTexel) {
         float c[4] = {0, 0, 0, 0}, rgba[4];
+        if (format == GL_DEPTH_STENCIL) {
+          unpackDepthStencil(row + size_t(i) * layout.groupBytes, type, layout.swapBytes, transfer, image.format,
+                             out);
+          continue;
+        }
         if (format == GL_COLOR_INDEX) {  // §3.6.5: index arithmetic, then index to RGBA
           ClientLayout slice = layout;
           slice.start += size_t(k) * layout.imageStride;
@@ -463,6 +534,34 @@ void writeElement(uint8_t* p, int bytes, uint32_t v) {
   }
 }
 
+// One Z24S8 texel as GL_DEPTH_STENCIL (the depth in the top 24 bits of
+// GL_UNSIGNED_INT_24_8, as a float before the stencil word of
+// GL_FLOAT_32_UNSIGNED_INT_24_8_REV) or as GL_STENCIL_INDEX, the index
+// (Mesa gives it for a depth-stencil texture).
+void packDepthStencil(const uint8_t* texel, GLenum format, GLenum type, uint8_t* out) {
+  const uint32_t depth24 = storedChannel(TexelFormat::Z24S8, texel, 0), stencil = texelStencil(texel);
+  if (format == GL_STENCIL_INDEX) {
+    if (type == GL_FLOAT) {
+      const float f = static_cast<float>(stencil);
+      uint32_t v;
+      std::memcpy(&v, &f, 4);
+      writeElement(out, 4, v);
+    } else {
+      writeElement(out, elementBytes(type), stencil);
+    }
+    return;
+  }
+  if (type == GL_UNSIGNED_INT_24_8) {
+    writeElement(out, 4, depth24 << 8 | stencil);
+    return;
+  }
+  const float depth = unormToFloat(depth24, 24);
+  uint32_t v;
+  std::memcpy(&v, &depth, 4);
+  writeElement(out, 4, v);
+  writeElement(out + 4, 4, stencil);
+}
+
 }  // namespace
 
 void packImage(const TextureImage& image, const ClientLayout& layout, GLenum format, GLenum type,
@@ -475,8 +574,14 @@ void packImage(const TextureImage& image, const ClientLayout& layout, GLenum for
       const int clientRow = layout.invertRows ? image.height - 1 - j : j;
       uint8_t* row = pixels + layout.start + size_t(k) * layout.imageStride + size_t(clientRow) * layout.rowStride;
       for (int i = 0; i < image.width; ++i) {
+        const uint8_t* texel = image.texel(i, j, k);
+        uint8_t* group = row + size_t(i) * layout.groupBytes;
+        if (format == GL_DEPTH_STENCIL || format == GL_STENCIL_INDEX) {  // a Z24S8 image (glGetTexImage checks)
+          packDepthStencil(texel, format, type, group);
+          continue;
+        }
         float rgba[4];
-        texelToRGBA(image.format, image.texel(i, j, k), rgba);
+        texelToRGBA(image.format, texel, rgba);
         float c[4] = {0, 0, 0, 0};
         switch (format) {
           case GL_RED:

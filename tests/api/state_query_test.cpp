@@ -532,6 +532,7 @@ TEST_F(StateQueryTest, AdvertisedExtensionsHaveTheirCommands) {
       {"GL_ARB_texture_non_power_of_two", {}},
       {"GL_EXT_bgra", {}},
       {"GL_EXT_packed_pixels", {}},
+      {"GL_EXT_packed_depth_stencil", {}},
       {"GL_ARB_pixel_buffer_object", {}},
       {"GL_EXT_vertex_array_bgra", {}},
       {"GL_MESA_pack_invert", {}},

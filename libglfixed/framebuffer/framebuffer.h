@@ -44,8 +44,12 @@ enum class PixelFormat {
 // in float (fragment/wide_color.inc). kUnormBits: each channel an unsigned
 // value of bits[k] (< 8) bits in a byte of its own, as the texels of GL_RGBA4,
 // GL_RGB5_A1, GL_R3_G3_B2... textures are kept (texture/texel_format.h), and
-// so the renderbuffers of those formats.
-enum class ChannelType : uint8_t { kUnorm8, kRGB565, kUnormBits, kUnorm16, kFloat32 };
+// so the renderbuffers of those formats. kUnormWideBits: each channel an
+// unsigned value of bits[k] bits in a 16-bit word of its own (channel k at
+// bytes 2k), as GL_RGB10_A2 and GL_RGB10 textures are kept: llvmpipe blends
+// formats with a channel of 9 to 16 bits in its 16-bit type, so these take the
+// wide path (wide_color.inc: widened to 16 bits at the load, cut at the write).
+enum class ChannelType : uint8_t { kUnorm8, kRGB565, kUnormBits, kUnorm16, kUnormWideBits, kFloat32 };
 
 struct ColorBuffer {
   uint8_t* pixels = nullptr;  // client memory, not owned
@@ -64,6 +68,9 @@ struct ColorBuffer {
   // kUnormBits, one byte a channel (red, green, blue, alpha at bytes 0..3);
   // a channel of 0 bits is not stored (alpha reads 1).
   void setUnormBits(int r, int g, int b, int a);
+  // kUnormWideBits, a 16-bit word a channel (8 bytes a pixel); a channel of
+  // 0 bits is not stored (alpha reads 1).
+  void setUnormWideBits(int r, int g, int b, int a);
   // 8- or 16-bit channels (`type` kUnorm8 or kUnorm16) at the given channel
   // indices (-1: not stored), `bytesPerPixel` in all: the texels of
   // alpha, luminance and luminance-alpha textures.
@@ -270,6 +277,24 @@ inline uint8_t unormBitsToByte(uint32_t v, int bits) {
   uint32_t out = 0;
   for (int shift = 8 - bits; shift > -bits; shift -= bits) out |= shift >= 0 ? v << shift : v >> -shift;
   return static_cast<uint8_t>(out);
+}
+
+// llvmpipe's conversion of its 16-bit blend type to an n-bit channel (n < 16),
+// measured on R10G10B10A2 (MESA_FACTS.md "llvmpipe's n-bit channels"): with
+// n >= 8 the top n bits (truncation: a fragment's 10-bit red is
+// rint(c * 65535) >> 6); fewer bits ((v >> n) * (2^n - 1) + 2^(15 - n)) >>
+// (16 - n) (2 bits: ((v >> 2) * 3 + 8192) >> 14).
+inline uint32_t unorm16ToBits(uint32_t v, int bits) {
+  if (bits >= 8) return v >> (16 - bits);
+  return ((v >> bits) * ((1u << bits) - 1u) + (1u << (15 - bits))) >> (16 - bits);
+}
+
+// An n-bit (n < 16) channel widened to llvmpipe's 16-bit blend type by bit
+// replication (10 bits: (v << 6) | (v >> 4)).
+inline uint32_t bitsToUnorm16(uint32_t v, int bits) {
+  uint32_t out = 0;
+  for (int shift = 16 - bits; shift > -bits; shift -= bits) out |= shift >= 0 ? v << shift : v >> -shift;
+  return out & 0xffffu;
 }
 
 // Float [0,1] to an n-bit unsigned value as llvmpipe does it: a single-precision

@@ -21,11 +21,13 @@ RenderbufferFormat colorFormat(int r, int g, int b, int a, PixelFormat storedAs 
   // Not 3-3-2: llvmpipe's conversion to 3 bits is none of truncation and
   // rounding (bytes 21 and 24 are 0 and 1 of 7), so R3_G3_B2 is not drawn here.
   f.unormBits = !drawable && r > 3 && r < 8 && g < 8 && b < 8 && a < 8;
-  f.drawable = drawable || f.unormBits;
+  // 10 bits (GL_RGB10_A2, GL_RGB10): 16-bit words, kUnormWideBits.
+  f.unormWideBits = !drawable && r == 10 && g == 10 && b == 10;
+  f.drawable = drawable || f.unormBits || f.unormWideBits;
   f.pixelFormat = drawable ? storedAs : PixelFormat::kRGBA;
   ColorBuffer c;
   c.setFormat(f.pixelFormat);
-  f.bytesPerPixel = c.bytesPerPixel;
+  f.bytesPerPixel = f.unormWideBits ? 8 : c.bytesPerPixel;
   return f;
 }
 
@@ -215,8 +217,8 @@ enum class Point { kColor, kDepth, kStencil };
 // (texture/texel_format.h: four stored channels): 8-bit ones as OSMesa's
 // RGBA / RGBX bytes (sRGB ones too: written as they are without
 // GL_FRAMEBUFFER_SRGB, probed), 16-bit ones as its 16-bit buffers, fewer
-// bits as kUnormBits. False for the formats not drawn into here (10-bit ones,
-// luminance, intensity and alpha textures).
+// bits as kUnormBits, 10 bits as kUnormWideBits. False for the formats not
+// drawn into here (luminance, intensity and alpha textures).
 bool colorTexelView(texture::TexelFormat f, ColorBuffer* c) {
   const texture::TexelFormatInfo& info = texture::texelFormatInfo(f);
   // Alpha, luminance and luminance-alpha textures of 8 and 16 bits: the
@@ -245,6 +247,8 @@ bool colorTexelView(texture::TexelFormat f, ColorBuffer* c) {
     c->setFormat(alpha ? PixelFormat::kRGBA : PixelFormat::kRGBX);
   } else if (info.bytesPerChannel == 1 && b[0] > 3) {  // not 3-3-2 (renderbufferFormat)
     c->setUnormBits(b[0], b[1], b[2], alpha ? b[3] : 0);
+  } else if (info.bytesPerChannel == 2 && b[0] == 10) {  // RGB10A2, RGB10X2
+    c->setUnormWideBits(b[0], b[1], b[2], alpha ? b[3] : 0);
   } else if (info.bytesPerChannel == 2 && b[0] == 16) {
     c->setFormat(PixelFormat::kRGBA16);  // RGBX16: four 16-bit channels, the fourth unused
     if (!alpha) c->alpha = -1;
@@ -383,6 +387,8 @@ bool colorView(const Attachment& a, FramebufferObjects& objects, texture::Textur
     const RenderbufferFormat& f = rb->format;
     if (f.unormBits)
       c.setUnormBits(f.red, f.green, f.blue, f.alpha);
+    else if (f.unormWideBits)
+      c.setUnormWideBits(f.red, f.green, f.blue, f.alpha);
     else
       c.setFormat(f.pixelFormat);
     c.pixels = rb->storage.data();

@@ -51,6 +51,9 @@ struct RenderbufferFormat {
   // Channels of fewer than 8 bits (GL_RGBA4, GL_RGB5_A1...): stored as the
   // textures of those formats are, a byte a channel (ChannelType::kUnormBits).
   bool unormBits = false;
+  // 10-bit channels (GL_RGB10_A2, GL_RGB10): a 16-bit word a channel, 8
+  // bytes a pixel, as those textures are (ChannelType::kUnormWideBits).
+  bool unormWideBits = false;
   int bytesPerPixel = 4;
 };
 // False for an enum glRenderbufferStorage refuses (GL_INVALID_ENUM).

@@ -62,6 +62,11 @@ const FormatCase kCases[] = {
     {false, 0x805A, {16, 16, 16, 16}, 0x7454d310u, 0x49b70651u, 0x0aa9c3d0u, 0x49b70651u},
     {false, 0x8C43, {8, 8, 8, 8}, 0xec22a789u, 0x09abfc1du, 0xac092f60u, 0x09abfc1du},  // GL_SRGB8_ALPHA8
     {false, 0x8C41, {8, 8, 8, 0}, 0xbda075cdu, 0x4f676471u, 0x35caa80du, 0x4f676471u},  // GL_SRGB8
+    // 10 bits: blended in llvmpipe's 16-bit type, cut to 10 (and 2) bits.
+    {true, 0x8059, {10, 10, 10, 2}, 0x445cd771u, 0x7198e7f2u, 0x562d7e32u, 0u},   // GL_RGB10_A2
+    {true, 0x8052, {10, 10, 10, 0}, 0xd9f036f9u, 0xa7f63ad6u, 0x50fc113au, 0u},   // GL_RGB10
+    {false, 0x8059, {10, 10, 10, 2}, 0x445cd771u, 0x7198e7f2u, 0x562d7e32u, 0x7198e7f2u},  // GL_RGB10_A2
+    {false, 0x8052, {10, 10, 10, 0}, 0xd9f036f9u, 0xa7f63ad6u, 0x50fc113au, 0xa7f63ad6u},  // GL_RGB10
     // Luminance-alpha textures: red goes into the luminance, read back as
     // (L, 0, 0, A); the luminance reports no size.
     {false, 0x8045, {0, 0, 0, 8}, 0x987c007fu, 0xdee99a0du, 0x6f50d625u, 0xdee99a0du},    // GL_LUMINANCE8_ALPHA8
@@ -106,6 +111,7 @@ void drawScene() {
 GLenum externalFormat(GLenum internal) {
   switch (internal) {
     case GL_RGBA8: case GL_RGBA4: case GL_RGB5_A1: case GL_RGBA2: case GL_RGBA16: case GL_RGBA12: case 0x8C43:
+    case GL_RGB10_A2:
       return GL_RGBA;
     default: return GL_RGB;
   }

@@ -49,7 +49,10 @@ enum class PixelFormat {
 // bytes 2k), as GL_RGB10_A2 and GL_RGB10 textures are kept: llvmpipe blends
 // formats with a channel of 9 to 16 bits in its 16-bit type, so these take the
 // wide path (wide_color.inc: widened to 16 bits at the load, cut at the write).
-enum class ChannelType : uint8_t { kUnorm8, kRGB565, kUnormBits, kUnorm16, kUnormWideBits, kFloat32 };
+// kFloat16: half floats (GL_RGBA16F, GL_RGB16F renderbuffers), a 16-bit word
+// a channel at bytes 2k, blended in float (floatToHalf: llvmpipe's store
+// rounds toward zero).
+enum class ChannelType : uint8_t { kUnorm8, kRGB565, kUnormBits, kUnorm16, kUnormWideBits, kFloat16, kFloat32 };
 
 struct ColorBuffer {
   uint8_t* pixels = nullptr;  // client memory, not owned
@@ -71,12 +74,20 @@ struct ColorBuffer {
   // kUnormWideBits, a 16-bit word a channel (8 bytes a pixel); a channel of
   // 0 bits is not stored (alpha reads 1).
   void setUnormWideBits(int r, int g, int b, int a);
+  // kFloat16, four half floats a pixel (alpha not stored without `alpha`).
+  void setHalfFloat(bool alpha);
   // 8- or 16-bit channels (`type` kUnorm8 or kUnorm16) at the given channel
   // indices (-1: not stored), `bytesPerPixel` in all: the texels of
   // alpha, luminance and luminance-alpha textures.
   void setChannels(ChannelType type, int bytesPerPixel, int r, int g, int b, int a);
   // Luminance: GL_RED_BITS... report 0, as Mesa does for such attachments.
   bool luminance = false;
+  // A framebuffer object's float attachment: Mesa's framebuffer is then in
+  // float mode (GL_RGBA_FLOAT_MODE_ARB 1), so GL_CLAMP_READ_COLOR's
+  // GL_FIXED_ONLY does not clamp glReadPixels (probed; OSMesa's float
+  // buffers are not in float mode and clamp).
+  bool floatMode = false;
+  bool floatChannels() const { return channels == ChannelType::kFloat16 || channels == ChannelType::kFloat32; }
   // 16-bit or float channels: the fragment stage's wide path.
   bool wide() const { return channels >= ChannelType::kUnorm16; }
   bool hasAlpha() const { return alpha >= 0; }
@@ -296,6 +307,15 @@ inline uint32_t bitsToUnorm16(uint32_t v, int bits) {
   for (int shift = 16 - bits; shift > -bits; shift -= bits) out |= shift >= 0 ? v << shift : v >> -shift;
   return out & 0xffffu;
 }
+
+// A float as a half float the way llvmpipe stores its float blend results
+// into R16G16B16A16_FLOAT (probed: 1024 random pixels drawn, blended and
+// cleared): rounded toward zero, denormals too, and magnitudes past the
+// largest half (65504) saturate to it (120000 stores 65504) rather than
+// becoming infinite. NaN stays NaN.
+uint16_t floatToHalf(float v);
+// Exact.
+float halfToFloat(uint16_t h);
 
 // Float [0,1] to an n-bit unsigned value as llvmpipe does it: a single-precision
 // multiply, then round to nearest even (REFERENCE.md, "Colour").

@@ -367,10 +367,13 @@ GLenum readPixels(const Framebuffer& fb, const PixelStoreAttrib& pack, GLint x, 
         // GL_FIXED_ONLY clamps them), then converted to the type.
         // 5-6-5 gives bytes by bit replication (ColorBuffer::read), as Mesa's
         // unpack to 8 bits.
+        // A framebuffer object's float attachment is in float mode: its
+        // floats are read unclamped, the other types from the clamped value.
         fb.read.readFloat(wx, wy, f);
         for (int i = 0; i < 4; ++i) {
-          f[i] = f[i] > 0.0f ? (f[i] < 1.0f ? f[i] : 1.0f) : 0.0f;
-          rgba[i] = static_cast<uint8_t>(std::nearbyint(f[i] * 255.0f));
+          const float clamped = f[i] > 0.0f ? (f[i] < 1.0f ? f[i] : 1.0f) : 0.0f;
+          if (!(fb.read.floatMode && type == GL_FLOAT)) f[i] = clamped;
+          rgba[i] = static_cast<uint8_t>(std::nearbyint(clamped * 255.0f));
         }
         if (fb.read.channels == ChannelType::kRGB565 || fb.read.channels == ChannelType::kUnormBits)
           fb.read.read(wx, wy, rgba);

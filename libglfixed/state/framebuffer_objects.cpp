@@ -67,8 +67,12 @@ bool renderbufferFormat(GLenum internalFormat, RenderbufferFormat* out) {
     case 0x8C42: f = colorFormat(8, 8, 8, 8, PixelFormat::kRGBA); break;  // GL_SRGB8_ALPHA8, GL_SRGB_ALPHA: drawn linear (no GL_FRAMEBUFFER_SRGB)
     case 0x8814: f = colorFormat(32, 32, 32, 32, PixelFormat::kRGBA32F); break;  // GL_RGBA32F
     case 0x8815: f = colorFormat(32, 32, 32, 0, PixelFormat::kRGB32F); break;    // GL_RGB32F
-    case 0x881B: f = colorFormat(16, 16, 16, 0); break;                         // GL_RGB16F
-    case 0x881A: f = colorFormat(16, 16, 16, 16); break;  // GL_RGBA16F
+    case 0x881B:  // GL_RGB16F
+    case 0x881A:  // GL_RGBA16F: half floats, kFloat16
+      f = colorFormat(16, 16, 16, internalFormat == 0x881A ? 16 : 0);
+      f.halfFloat = f.drawable = true;
+      f.bytesPerPixel = 8;
+      break;
     case GL_LUMINANCE:
     case GL_LUMINANCE4:
     case GL_LUMINANCE8:
@@ -385,7 +389,9 @@ bool colorView(const Attachment& a, FramebufferObjects& objects, texture::Textur
     if (!rb || rb->format.kind != RenderbufferFormat::Kind::kColor || !rb->format.drawable || rb->width < 1)
       return false;
     const RenderbufferFormat& f = rb->format;
-    if (f.unormBits)
+    if (f.halfFloat)
+      c.setHalfFloat(f.alpha > 0);
+    else if (f.unormBits)
       c.setUnormBits(f.red, f.green, f.blue, f.alpha);
     else if (f.unormWideBits)
       c.setUnormWideBits(f.red, f.green, f.blue, f.alpha);
@@ -399,6 +405,7 @@ bool colorView(const Attachment& a, FramebufferObjects& objects, texture::Textur
   }
   c.rowLength = c.width;
   c.yUp = true;
+  c.floatMode = c.floatChannels();
   *out = c;
   return true;
 }

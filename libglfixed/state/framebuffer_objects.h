@@ -54,6 +54,8 @@ struct RenderbufferFormat {
   // 10-bit channels (GL_RGB10_A2, GL_RGB10): a 16-bit word a channel, 8
   // bytes a pixel, as those textures are (ChannelType::kUnormWideBits).
   bool unormWideBits = false;
+  // GL_RGBA16F, GL_RGB16F: half floats, 8 bytes a pixel (ChannelType::kFloat16).
+  bool halfFloat = false;
   int bytesPerPixel = 4;
 };
 // False for an enum glRenderbufferStorage refuses (GL_INVALID_ENUM).

@@ -48,6 +48,8 @@ const FormatCase kCases[] = {
     // pixels: llvmpipe interpolates an object's colours y-up, this library y-down.
     {true, 0x8814, {32, 32, 32, 32}, 0x8797beacu, 0u, 0u, 0u},  // GL_RGBA32F
     {true, 0x8815, {32, 32, 32, 0}, 0x8976bcfau, 0u, 0u, 0u},   // GL_RGB32F
+    {true, 0x881A, {16, 16, 16, 16}, 0xd685266bu, 0u, 0u, 0u},  // GL_RGBA16F
+    {true, 0x881B, {16, 16, 16, 0}, 0x813f8142u, 0u, 0u, 0u},   // GL_RGB16F
     {true, 0x8C43, {8, 8, 8, 8}, 0xec22a789u, 0x09abfc1du, 0xac092f60u, 0u},  // GL_SRGB8_ALPHA8
     {false, 0x8058, {8, 8, 8, 8}, 0xec22a789u, 0x09abfc1du, 0xac092f60u, 0x09abfc1du},
     {false, 0x8051, {8, 8, 8, 0}, 0xbda075cdu, 0x4f676471u, 0x35caa80du, 0x4f676471u},
@@ -252,6 +254,90 @@ TEST_F(FramebufferFormatTest, DrawIntoEveryColourFormat) {
       deleteRenderbuffers(1, &rb);
     }
     deleteFramebuffers(1, &fb);
+    EXPECT_NO_GL_ERROR();
+  }
+}
+
+// Half-float renderbuffers (Mesa, probed): clears and blends keep values
+// outside [0, 1]; the store rounds toward zero, denormal halves too, and
+// saturates at the largest half (65504); the framebuffer is in float mode,
+// so glReadPixels of floats does not clamp (nor does it on GL_RGBA32F).
+// Points at pixel centres: no interpolation, the same on any orientation.
+TEST_F(FramebufferFormatTest, HalfFloatStoreRoundsTowardZero) {
+  void (*genFramebuffers)(GLsizei, GLuint*);
+  void (*bindFramebuffer)(GLenum, GLuint);
+  GLenum (*checkFramebufferStatus)(GLenum);
+  void (*framebufferRenderbuffer)(GLenum, GLenum, GLenum, GLuint);
+  void (*genRenderbuffers)(GLsizei, GLuint*);
+  void (*bindRenderbuffer)(GLenum, GLuint);
+  void (*renderbufferStorage)(GLenum, GLenum, GLsizei, GLsizei);
+  void (*blendEquation)(GLenum);
+  load(genFramebuffers, "glGenFramebuffers");
+  load(bindFramebuffer, "glBindFramebuffer");
+  load(checkFramebufferStatus, "glCheckFramebufferStatus");
+  load(framebufferRenderbuffer, "glFramebufferRenderbuffer");
+  load(genRenderbuffers, "glGenRenderbuffers");
+  load(bindRenderbuffer, "glBindRenderbuffer");
+  load(renderbufferStorage, "glRenderbufferStorage");
+  load(blendEquation, "glBlendEquation");
+  ASSERT_NE(blendEquation, nullptr);
+  constexpr GLenum kFloatMode = 0x8820;  // GL_RGBA_FLOAT_MODE_ARB
+  EXPECT_EQ(GetInt(kFloatMode), 0);
+  for (GLenum internal : {GLenum(0x881A), GLenum(0x8814)}) {  // GL_RGBA16F, GL_RGBA32F
+    SCOPED_TRACE(testing::Message() << "renderbuffer 0x" << std::hex << internal);
+    const bool half = internal == 0x881A;
+    GLuint fb = 0, rb = 0;
+    genFramebuffers(1, &fb);
+    bindFramebuffer(kFramebuffer, fb);
+    genRenderbuffers(1, &rb);
+    bindRenderbuffer(kRenderbuffer, rb);
+    renderbufferStorage(kRenderbuffer, internal, 4, 1);
+    framebufferRenderbuffer(kFramebuffer, kColor0, kRenderbuffer, rb);
+    ASSERT_EQ(checkFramebufferStatus(kFramebuffer), kComplete);
+    EXPECT_EQ(GetInt(kFloatMode), 1);
+    glViewport(0, 0, 4, 1);
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glOrtho(0, 4, 0, 1, -1, 1);
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+    glClearColor(60000.0f, 1e-6f, -3e-7f, 2.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_DST_COLOR, GL_ONE);  // pixel 0: d * s + d
+    glBegin(GL_POINTS);
+    glColor4f(1, 1, 0.5f, 1);
+    glVertex2f(0.5f, 0.5f);
+    glEnd();
+    glBlendFunc(GL_ONE, GL_ONE);  // pixel 1: d - s
+    blendEquation(GL_FUNC_REVERSE_SUBTRACT);
+    glBegin(GL_POINTS);
+    glColor4f(0.3f, 0.7f, 1, 1);
+    glVertex2f(1.5f, 0.5f);
+    glEnd();
+    blendEquation(GL_FUNC_ADD);
+    glDisable(GL_BLEND);
+    glBegin(GL_POINTS);  // pixel 2: unblended
+    glColor4f(0.1f, 0.2f, 0.3f, 0.4f);
+    glVertex2f(2.5f, 0.5f);
+    glEnd();
+    float f[16];
+    GLubyte ub[16];
+    glReadPixels(0, 0, 4, 1, GL_RGBA, GL_FLOAT, f);
+    glReadPixels(0, 0, 4, 1, GL_RGBA, GL_UNSIGNED_BYTE, ub);
+    if (half) {
+      const float expected[12] = {65504.0f, 0x1p-19f, -0x1.cp-22f, 4.0f, 59968.0f, -0x1.664p-1f, -1.0f, 1.0f,
+                                  0x1.998p-4f, 0x1.998p-3f, 0x1.33p-2f, 0x1.998p-2f};
+      for (int i = 0; i < 12; ++i) EXPECT_EQ(f[i], expected[i]) << "float " << i;
+    } else {
+      EXPECT_EQ(f[0], 120000.0f);
+      EXPECT_EQ(f[5], 1e-6f - 0.7f);
+      EXPECT_EQ(f[8], 0.1f);
+    }
+    const GLubyte bytes[8] = {255, 0, 0, 255, 255, 0, 0, 255};
+    for (int i = 0; i < 8; ++i) EXPECT_EQ(ub[i], bytes[i]) << "byte " << i;
+    bindFramebuffer(kFramebuffer, 0);
+    EXPECT_EQ(GetInt(kFloatMode), 0);
     EXPECT_NO_GL_ERROR();
   }
 }

@@ -272,13 +272,16 @@ struct Framebuffer {
 };
 
 // A byte as an n-bit (n < 8) unsigned normalized value, as llvmpipe
-// converts its 8-bit blend results: 5 and 6 bits keep the top bits, 4 bits and
-// fewer round to nearest (probed on B4G4R4A4: byte 9 is 1 of 15, byte 15 of
-// B5G5R5A1 1 of 31).
+// converts its 8-bit blend results: 5 and 6 bits keep the top bits, 4 bits
+// round to nearest (probed on B4G4R4A4: byte 9 is 1 of 15, byte 15 of
+// B5G5R5A1 1 of 31); fewer bits ((b >> n) * (2^n - 1) + 2^(7 - n)) >> (8 - n)
+// (B2G3R3: bytes 21 and 24 give 0 and 1 of 7, 54 and 57 give 1 and 2; the
+// 1-bit alpha of B5G5R5A1 rounds either way), the same rule as unorm16ToBits.
 inline uint8_t byteToUnormBits(uint32_t byte, int bits) {
   if (bits >= 5) return static_cast<uint8_t>(byte >> (8 - bits));
   const uint32_t max = (1u << bits) - 1u;
-  return static_cast<uint8_t>((byte * max + 127u) / 255u);
+  if (bits == 4) return static_cast<uint8_t>((byte * max + 127u) / 255u);
+  return static_cast<uint8_t>(((byte >> bits) * max + (1u << (7 - bits))) >> (8 - bits));
 }
 
 // An n-bit (n < 8) unsigned normalized value as a byte by bit replication,

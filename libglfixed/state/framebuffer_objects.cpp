@@ -18,9 +18,7 @@ RenderbufferFormat colorFormat(int r, int g, int b, int a, PixelFormat storedAs 
   f.blue = b;
   f.alpha = a;
   // Fewer than 8 bits a channel: drawn as kUnormBits, 4 bytes a pixel.
-  // Not 3-3-2: llvmpipe's conversion to 3 bits is none of truncation and
-  // rounding (bytes 21 and 24 are 0 and 1 of 7), so R3_G3_B2 is not drawn here.
-  f.unormBits = !drawable && r > 3 && r < 8 && g < 8 && b < 8 && a < 8;
+  f.unormBits = !drawable && r > 2 && r < 8 && g < 8 && b < 8 && a < 8;
   // 10 bits (GL_RGB10_A2, GL_RGB10): 16-bit words, kUnormWideBits.
   f.unormWideBits = !drawable && r == 10 && g == 10 && b == 10;
   f.drawable = drawable || f.unormBits || f.unormWideBits;
@@ -249,7 +247,7 @@ bool colorTexelView(texture::TexelFormat f, ColorBuffer* c) {
   const bool alpha = info.baseFormat == GL_RGBA;
   if (info.bytesPerChannel == 1 && b[0] == 8) {
     c->setFormat(alpha ? PixelFormat::kRGBA : PixelFormat::kRGBX);
-  } else if (info.bytesPerChannel == 1 && b[0] > 3) {  // not 3-3-2 (renderbufferFormat)
+  } else if (info.bytesPerChannel == 1 && b[0] > 2) {  // 3-3-2 ... 5-6-5
     c->setUnormBits(b[0], b[1], b[2], alpha ? b[3] : 0);
   } else if (info.bytesPerChannel == 2 && b[0] == 10) {  // RGB10A2, RGB10X2
     c->setUnormWideBits(b[0], b[1], b[2], alpha ? b[3] : 0);

@@ -64,6 +64,9 @@ const FormatCase kCases[] = {
     {false, 0x805A, {16, 16, 16, 16}, 0x7454d310u, 0x49b70651u, 0x0aa9c3d0u, 0x49b70651u},
     {false, 0x8C43, {8, 8, 8, 8}, 0xec22a789u, 0x09abfc1du, 0xac092f60u, 0x09abfc1du},  // GL_SRGB8_ALPHA8
     {false, 0x8C41, {8, 8, 8, 0}, 0xbda075cdu, 0x4f676471u, 0x35caa80du, 0x4f676471u},  // GL_SRGB8
+    // 3-3-2: ((b >> n) * (2^n - 1) + 2^(7 - n)) >> (8 - n) from the 8-bit blend.
+    {true, 0x2A10, {3, 3, 2, 0}, 0xbc31cbfcu, 0x2e16f2b3u, 0xfda829e9u, 0u},   // GL_R3_G3_B2
+    {false, 0x2A10, {3, 3, 2, 0}, 0xbc31cbfcu, 0x2e16f2b3u, 0xfda829e9u, 0x2e16f2b3u},  // GL_R3_G3_B2
     // 10 bits: blended in llvmpipe's 16-bit type, cut to 10 (and 2) bits.
     {true, 0x8059, {10, 10, 10, 2}, 0x445cd771u, 0x7198e7f2u, 0x562d7e32u, 0u},   // GL_RGB10_A2
     {true, 0x8052, {10, 10, 10, 0}, 0xd9f036f9u, 0xa7f63ad6u, 0x50fc113au, 0u},   // GL_RGB10

@@ -56,6 +56,8 @@ struct RenderbufferFormat {
   bool unormWideBits = false;
   // GL_RGBA16F, GL_RGB16F: half floats, 8 bytes a pixel (ChannelType::kFloat16).
   bool halfFloat = false;
+  // GL_RG8: two bytes a pixel, red and green (ColorBuffer::setChannels).
+  bool redGreen8 = false;
   int bytesPerPixel = 4;
 };
 // False for an enum glRenderbufferStorage refuses (GL_INVALID_ENUM).

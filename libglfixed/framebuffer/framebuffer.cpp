@@ -154,7 +154,7 @@ void ColorBuffer::readConverted(int x, int y, uint8_t rgba[4]) const {
   if (channels == ChannelType::kUnormBits) {
     const uint8_t* p = pixel(x, y);
     const int offset[4] = {red, green, blue, alpha};
-    for (int k = 0; k < 4; ++k) rgba[k] = offset[k] >= 0 ? unormBitsToByte(p[offset[k]], bits[k]) : 255;
+    for (int k = 0; k < 4; ++k) rgba[k] = offset[k] >= 0 ? unormBitsToByte(p[offset[k]], bits[k]) : k == 3 ? 255 : 0;
     return;
   }
   if (channels == ChannelType::kRGB565) {
@@ -192,7 +192,7 @@ void ColorBuffer::readFloat(int x, int y, float rgba[4]) const {
     case ChannelType::kUnormBits:
       for (int k = 0; k < 4; ++k) {
         const float max = static_cast<float>((1u << bits[k]) - 1u);
-        rgba[k] = offset[k] >= 0 ? static_cast<float>(p[offset[k]]) * (1.0f / max) : 1.0f;
+        rgba[k] = offset[k] >= 0 ? static_cast<float>(p[offset[k]]) * (1.0f / max) : missing(k);
       }
       return;
     case ChannelType::kUnorm16:

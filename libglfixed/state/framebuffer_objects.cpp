@@ -246,6 +246,17 @@ bool colorTexelView(texture::TexelFormat f, ColorBuffer* c) {
       default: break;
     }
   }
+  // LUMINANCE4_ALPHA4: 4-bit luminance and alpha in a byte each, drawn as
+  // kUnormBits (llvmpipe's 8-bit blend, rounded to 4 bits).
+  if (info.baseFormat == GL_LUMINANCE_ALPHA && info.channels == 2 && info.bytesPerChannel == 1 &&
+      info.bits[0] == 4 && info.bits[1] == 4) {
+    c->setUnormBits(4, 0, 0, 4);
+    c->bytesPerPixel = info.bytesPerTexel;
+    c->green = c->blue = -1;
+    c->alpha = 1;
+    c->luminance = true;
+    return true;
+  }
   if ((info.baseFormat != GL_RGBA && info.baseFormat != GL_RGB) || info.channels != 4) return false;
   const uint8_t* b = info.bits;
   const bool alpha = info.baseFormat == GL_RGBA;

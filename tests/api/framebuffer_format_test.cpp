@@ -76,6 +76,7 @@ const FormatCase kCases[] = {
     // Luminance-alpha textures: red goes into the luminance, read back as
     // (L, 0, 0, A); the luminance reports no size.
     {false, 0x8045, {0, 0, 0, 8}, 0x987c007fu, 0xdee99a0du, 0x6f50d625u, 0xdee99a0du},    // GL_LUMINANCE8_ALPHA8
+    {false, 0x8043, {0, 0, 0, 4}, 0xe7315ee8u, 0x96955087u, 0xa1043e6du, 0x96955087u},  // GL_LUMINANCE4_ALPHA4
     {false, 0x8048, {0, 0, 0, 16}, 0x2bfbadc9u, 0x74ba3e29u, 0x0ff6e4e9u, 0x74ba3e29u},   // GL_LUMINANCE16_ALPHA16
 };
 // clang-format on

@@ -253,10 +253,13 @@ void ColorBuffer::writeFloat(int x, int y, const float rgba[4], const bool* mask
           store16(p + 2 * offset[k], static_cast<uint16_t>(quantize(rgba[k], 65535.0f)));
       return;
     case ChannelType::kUnormWideBits:
+      // A clear rounds from float; anything else is stored as llvmpipe
+      // stores a fragment, through its 16-bit type (unorm16ToBits).
       for (int k = 0; k < 4; ++k)
         if (offset[k] >= 0 && (!mask || mask[k]))
           store16(p + 2 * offset[k],
-                  static_cast<uint16_t>(quantize(rgba[k], static_cast<float>((1u << bits[k]) - 1u))));
+                  static_cast<uint16_t>(halfUp ? quantize(rgba[k], static_cast<float>((1u << bits[k]) - 1u))
+                                               : unorm16ToBits(quantize(rgba[k], 65535.0f), bits[k])));
       return;
     case ChannelType::kFloat16:
       for (int k = 0; k < 4; ++k)

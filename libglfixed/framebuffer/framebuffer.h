@@ -124,7 +124,8 @@ struct ColorBuffer {
   void readFloat(int x, int y, float rgba[4]) const;
   // `halfUp`: a clear's rounding, llvmpipe's util_iround (v * max + 0.5,
   // truncated: 0.3 is 5 of 15 and 19661 of 65535, where rint gives 4 and
-  // 19660; probed).
+  // 19660; probed). Without it, 16-bit channels round to nearest even and
+  // 10-bit ones are stored as fragments are (unorm16ToBits).
   void writeFloat(int x, int y, const float rgba[4], const bool* mask = nullptr, bool halfUp = false) const;
 
  private:

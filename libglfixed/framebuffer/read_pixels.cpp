@@ -50,8 +50,19 @@ void clearColor(const ColorBuffer& c, const ColorBufferAttrib& cb, const PixelBo
     const bool* mask = cb.writeMask.data();
     const float value[4] = {cb.clearColorUnclamped.r, cb.clearColorUnclamped.g, cb.clearColorUnclamped.b,
                             cb.clearColorUnclamped.a};
+    // Mesa clears a scissored part of the buffer, or some of its channels,
+    // by drawing a quad (st_Clear): its colour is then stored as a
+    // fragment's, which differs from the clear's rounding on 16-bit and
+    // 10-bit channels (probed: 1-pixel scissored clears of RGBA16 round to
+    // nearest even, of RGB10_A2 truncate from 16 bits).
+    const bool wholeBuffer = box.x0 <= 0 && box.y0 <= 0 && box.x1 >= c.width && box.y1 >= c.height;
+    bool allChannels = true;
+    for (int k = 0; k < 4; ++k) allChannels = allChannels && (mask[k] || c.channelBits(k) == 0);
+    const bool asFragment = (!wholeBuffer || !allChannels) &&
+                            (c.channels == ChannelType::kUnorm16 || c.channels == ChannelType::kUnormWideBits);
     for (int y = std::max(box.y0, 0); y < std::min(box.y1, c.height); ++y)
-      for (int x = std::max(box.x0, 0); x < std::min(box.x1, c.width); ++x) c.writeFloat(x, y, value, mask, true);
+      for (int x = std::max(box.x0, 0); x < std::min(box.x1, c.width); ++x)
+        c.writeFloat(x, y, value, mask, !asFragment);
     return;
   }
   uint8_t value[4];

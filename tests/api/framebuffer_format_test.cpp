@@ -347,6 +347,61 @@ TEST_F(FramebufferFormatTest, HalfFloatStoreRoundsTowardZero) {
   }
 }
 
+// A clear of part of the buffer (scissored) is drawn by Mesa as a quad, so
+// its colour is stored as a fragment's; a clear of the whole buffer rounds
+// half up from float (probed): 0.2 clears RGB10_A2 red to 205 of 1023 but a
+// scissored 0.2 stores rint(0.2 * 65535) >> 6 = 204; 0.3 clears RGBA16 to
+// 19661, scissored to 19660.
+TEST_F(FramebufferFormatTest, ScissoredClearIsStoredAsAFragment) {
+  void (*genFramebuffers)(GLsizei, GLuint*);
+  void (*bindFramebuffer)(GLenum, GLuint);
+  GLenum (*checkFramebufferStatus)(GLenum);
+  void (*framebufferRenderbuffer)(GLenum, GLenum, GLenum, GLuint);
+  void (*genRenderbuffers)(GLsizei, GLuint*);
+  void (*bindRenderbuffer)(GLenum, GLuint);
+  void (*renderbufferStorage)(GLenum, GLenum, GLsizei, GLsizei);
+  load(genFramebuffers, "glGenFramebuffers");
+  load(bindFramebuffer, "glBindFramebuffer");
+  load(checkFramebufferStatus, "glCheckFramebufferStatus");
+  load(framebufferRenderbuffer, "glFramebufferRenderbuffer");
+  load(genRenderbuffers, "glGenRenderbuffers");
+  load(bindRenderbuffer, "glBindRenderbuffer");
+  load(renderbufferStorage, "glRenderbufferStorage");
+  ASSERT_NE(renderbufferStorage, nullptr);
+  struct Case {
+    GLenum internal;
+    float value;
+    GLushort whole, scissored;  // red read back as GL_UNSIGNED_SHORT
+  };
+  // 205 and 204 of 1023 read rint(v / 1023 * 65535).
+  for (const Case& c : {Case{GL_RGB10_A2, 0.2f, 13133, 13069}, Case{GL_RGBA16, 0.3f, 19661, 19660}}) {
+    SCOPED_TRACE(testing::Message() << "renderbuffer 0x" << std::hex << c.internal);
+    GLuint fb = 0, rb = 0;
+    genFramebuffers(1, &fb);
+    bindFramebuffer(kFramebuffer, fb);
+    genRenderbuffers(1, &rb);
+    bindRenderbuffer(kRenderbuffer, rb);
+    renderbufferStorage(kRenderbuffer, c.internal, 4, 1);
+    framebufferRenderbuffer(kFramebuffer, kColor0, kRenderbuffer, rb);
+    ASSERT_EQ(checkFramebufferStatus(kFramebuffer), kComplete);
+    glClearColor(c.value, 0, 0, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(1, 0, 1, 1);
+    glClearColor(0.9f, 0, 0, 1);  // first something else, then the value
+    glClear(GL_COLOR_BUFFER_BIT);
+    glClearColor(c.value, 0, 0, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glDisable(GL_SCISSOR_TEST);
+    GLushort us[8];
+    glReadPixels(0, 0, 2, 1, GL_RGBA, GL_UNSIGNED_SHORT, us);
+    EXPECT_EQ(us[0], c.whole);
+    EXPECT_EQ(us[4], c.scissored);
+    bindFramebuffer(kFramebuffer, 0);
+    EXPECT_NO_GL_ERROR();
+  }
+}
+
 }  // namespace
 
 namespace {

@@ -61,9 +61,10 @@ bool renderbufferFormat(GLenum internalFormat, RenderbufferFormat* out) {
     case GL_ALPHA16: f = colorFormat(0, 0, 0, 16); break;
     case 0x8229: f = colorFormat(8, 0, 0, 0); break;  // GL_R8
     case 0x822B:  // GL_RG8: R8G8_UNORM, 2 bytes a pixel (reads (R, G, 0, 1))
-      f = colorFormat(8, 8, 0, 0);
-      f.redGreen8 = f.drawable = true;
-      f.bytesPerPixel = 2;
+    case 0x822C:  // GL_RG16: R16G16_UNORM, 4 bytes a pixel
+      f = internalFormat == 0x822B ? colorFormat(8, 8, 0, 0) : colorFormat(16, 16, 0, 0);
+      f.redGreen = f.drawable = true;
+      f.bytesPerPixel = internalFormat == 0x822B ? 2 : 4;
       break;
     case 0x8C43:
     case 0x8C42: f = colorFormat(8, 8, 8, 8, PixelFormat::kRGBA); break;  // GL_SRGB8_ALPHA8, GL_SRGB_ALPHA: drawn linear (no GL_FRAMEBUFFER_SRGB)
@@ -404,8 +405,8 @@ bool colorView(const Attachment& a, FramebufferObjects& objects, texture::Textur
     const RenderbufferFormat& f = rb->format;
     if (f.halfFloat)
       c.setHalfFloat(f.alpha > 0);
-    else if (f.redGreen8)
-      c.setChannels(ChannelType::kUnorm8, 2, 0, 1, -1, -1);
+    else if (f.redGreen)
+      c.setChannels(f.red == 8 ? ChannelType::kUnorm8 : ChannelType::kUnorm16, f.bytesPerPixel, 0, 1, -1, -1);
     else if (f.unormBits)
       c.setUnormBits(f.red, f.green, f.blue, f.alpha);
     else if (f.unormWideBits)

@@ -56,8 +56,8 @@ struct RenderbufferFormat {
   bool unormWideBits = false;
   // GL_RGBA16F, GL_RGB16F: half floats, 8 bytes a pixel (ChannelType::kFloat16).
   bool halfFloat = false;
-  // GL_RG8: two bytes a pixel, red and green (ColorBuffer::setChannels).
-  bool redGreen8 = false;
+  // GL_RG8, GL_RG16: red and green only, 8 or 16 bits (ColorBuffer::setChannels).
+  bool redGreen = false;
   int bytesPerPixel = 4;
 };
 // False for an enum glRenderbufferStorage refuses (GL_INVALID_ENUM).

@@ -65,6 +65,7 @@ const FormatCase kCases[] = {
     {false, 0x8C43, {8, 8, 8, 8}, 0xec22a789u, 0x09abfc1du, 0xac092f60u, 0x09abfc1du},  // GL_SRGB8_ALPHA8
     {false, 0x8C41, {8, 8, 8, 0}, 0xbda075cdu, 0x4f676471u, 0x35caa80du, 0x4f676471u},  // GL_SRGB8
     {true, 0x822B, {8, 8, 0, 0}, 0x822933deu, 0xf0d82dd7u, 0x464d73cbu, 0u},  // GL_RG8: (R, G, 0, 1)
+    {true, 0x822C, {16, 16, 0, 0}, 0x5a34fd5au, 0x5f5311d6u, 0x3b996edau, 0u},  // GL_RG16
     // 3-3-2: ((b >> n) * (2^n - 1) + 2^(7 - n)) >> (8 - n) from the 8-bit blend.
     {true, 0x2A10, {3, 3, 2, 0}, 0xbc31cbfcu, 0x2e16f2b3u, 0xfda829e9u, 0u},   // GL_R3_G3_B2
     {false, 0x2A10, {3, 3, 2, 0}, 0xbc31cbfcu, 0x2e16f2b3u, 0xfda829e9u, 0x2e16f2b3u},  // GL_R3_G3_B2

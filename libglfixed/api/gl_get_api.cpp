@@ -305,6 +305,10 @@ bool queryCoreState(Context& ctx, GLenum pname, StateValue& out) {
     case GL_GREEN_BITS: out.set({colorBits > 0 ? double(sized.channelBits(1)) : 0.0}); return true;
     case GL_BLUE_BITS: out.set({colorBits > 0 ? double(sized.channelBits(2)) : 0.0}); return true;
     case GL_ALPHA_BITS: out.set({colorBits > 0 ? double(sized.channelBits(3)) : 0.0}); return true;
+    // ARB_color_buffer_float: Mesa's framebuffer is in float mode with a
+    // framebuffer object's float colour buffer bound, not with OSMesa's
+    // float buffers (probed).
+    case 0x8820: out.set({ctx.fbo.draw && sized.floatMode ? 1.0 : 0.0}); return true;  // GL_RGBA_FLOAT_MODE_ARB
     case GL_DEPTH_BITS: out.set({double(fb.depth.bits())}); return true;
     case GL_STENCIL_BITS: out.set({double(fb.depth.stencilBits())}); return true;
     case GL_ACCUM_RED_BITS: case GL_ACCUM_GREEN_BITS: case GL_ACCUM_BLUE_BITS: case GL_ACCUM_ALPHA_BITS:

@@ -107,7 +107,7 @@ ShadeTarget makeShadeTarget(const raster::RasterState& state, Framebuffer& fb,
   // GL_NONE, a depth-only object) still runs the depth and stencil tests.
   const bool haveColor = fb.color.pixels != nullptr;
   for (int k = 0; k < 4; ++k) s.colorWrite[k] = state.colorWrite[k] && haveColor;
-  s.clampColor = fb.color.channels != ChannelType::kFloat32 || state.clampFragmentColor;
+  s.clampColor = !fb.color.floatChannels() || state.clampFragmentColor;
   s.anyColor = s.colorWrite[0] || s.colorWrite[1] || s.colorWrite[2] || s.colorWrite[3];
   s.allColor = s.colorWrite[0] && s.colorWrite[1] && s.colorWrite[2] && s.colorWrite[3];
   if (state.depthTest && fb.depth.bits() != 0) {

@@ -44,8 +44,15 @@ enum class PixelFormat {
 // in float (fragment/wide_color.inc). kUnormBits: each channel an unsigned
 // value of bits[k] (< 8) bits in a byte of its own, as the texels of GL_RGBA4,
 // GL_RGB5_A1, GL_R3_G3_B2... textures are kept (texture/texel_format.h), and
-// so the renderbuffers of those formats.
-enum class ChannelType : uint8_t { kUnorm8, kRGB565, kUnormBits, kUnorm16, kFloat32 };
+// so the renderbuffers of those formats. kUnormWideBits: each channel an
+// unsigned value of bits[k] bits in a 16-bit word of its own (channel k at
+// bytes 2k), as GL_RGB10_A2 and GL_RGB10 textures are kept: llvmpipe blends
+// formats with a channel of 9 to 16 bits in its 16-bit type, so these take the
+// wide path (wide_color.inc: widened to 16 bits at the load, cut at the write).
+// kFloat16: half floats (GL_RGBA16F, GL_RGB16F renderbuffers), a 16-bit word
+// a channel at bytes 2k, blended in float (floatToHalf: llvmpipe's store
+// rounds toward zero).
+enum class ChannelType : uint8_t { kUnorm8, kRGB565, kUnormBits, kUnorm16, kUnormWideBits, kFloat16, kFloat32 };
 
 struct ColorBuffer {
   uint8_t* pixels = nullptr;  // client memory, not owned
@@ -64,12 +71,23 @@ struct ColorBuffer {
   // kUnormBits, one byte a channel (red, green, blue, alpha at bytes 0..3);
   // a channel of 0 bits is not stored (alpha reads 1).
   void setUnormBits(int r, int g, int b, int a);
+  // kUnormWideBits, a 16-bit word a channel (8 bytes a pixel); a channel of
+  // 0 bits is not stored (alpha reads 1).
+  void setUnormWideBits(int r, int g, int b, int a);
+  // kFloat16, four half floats a pixel (alpha not stored without `alpha`).
+  void setHalfFloat(bool alpha);
   // 8- or 16-bit channels (`type` kUnorm8 or kUnorm16) at the given channel
   // indices (-1: not stored), `bytesPerPixel` in all: the texels of
   // alpha, luminance and luminance-alpha textures.
   void setChannels(ChannelType type, int bytesPerPixel, int r, int g, int b, int a);
   // Luminance: GL_RED_BITS... report 0, as Mesa does for such attachments.
   bool luminance = false;
+  // A framebuffer object's float attachment: Mesa's framebuffer is then in
+  // float mode (GL_RGBA_FLOAT_MODE_ARB 1), so GL_CLAMP_READ_COLOR's
+  // GL_FIXED_ONLY does not clamp glReadPixels (probed; OSMesa's float
+  // buffers are not in float mode and clamp).
+  bool floatMode = false;
+  bool floatChannels() const { return channels == ChannelType::kFloat16 || channels == ChannelType::kFloat32; }
   // 16-bit or float channels: the fragment stage's wide path.
   bool wide() const { return channels >= ChannelType::kUnorm16; }
   bool hasAlpha() const { return alpha >= 0; }
@@ -106,7 +124,8 @@ struct ColorBuffer {
   void readFloat(int x, int y, float rgba[4]) const;
   // `halfUp`: a clear's rounding, llvmpipe's util_iround (v * max + 0.5,
   // truncated: 0.3 is 5 of 15 and 19661 of 65535, where rint gives 4 and
-  // 19660; probed).
+  // 19660; probed). Without it, 16-bit channels round to nearest even and
+  // 10-bit ones are stored as fragments are (unorm16ToBits).
   void writeFloat(int x, int y, const float rgba[4], const bool* mask = nullptr, bool halfUp = false) const;
 
  private:
@@ -272,13 +291,16 @@ struct Framebuffer {
 };
 
 // A byte as an n-bit (n < 8) unsigned normalized value, as llvmpipe
-// converts its 8-bit blend results: 5 and 6 bits keep the top bits, 4 bits and
-// fewer round to nearest (probed on B4G4R4A4: byte 9 is 1 of 15, byte 15 of
-// B5G5R5A1 1 of 31).
+// converts its 8-bit blend results: 5 and 6 bits keep the top bits, 4 bits
+// round to nearest (probed on B4G4R4A4: byte 9 is 1 of 15, byte 15 of
+// B5G5R5A1 1 of 31); fewer bits ((b >> n) * (2^n - 1) + 2^(7 - n)) >> (8 - n)
+// (B2G3R3: bytes 21 and 24 give 0 and 1 of 7, 54 and 57 give 1 and 2; the
+// 1-bit alpha of B5G5R5A1 rounds either way), the same rule as unorm16ToBits.
 inline uint8_t byteToUnormBits(uint32_t byte, int bits) {
   if (bits >= 5) return static_cast<uint8_t>(byte >> (8 - bits));
   const uint32_t max = (1u << bits) - 1u;
-  return static_cast<uint8_t>((byte * max + 127u) / 255u);
+  if (bits == 4) return static_cast<uint8_t>((byte * max + 127u) / 255u);
+  return static_cast<uint8_t>(((byte >> bits) * max + (1u << (7 - bits))) >> (8 - bits));
 }
 
 // An n-bit (n < 8) unsigned normalized value as a byte by bit replication,
@@ -289,6 +311,33 @@ inline uint8_t unormBitsToByte(uint32_t v, int bits) {
   for (int shift = 8 - bits; shift > -bits; shift -= bits) out |= shift >= 0 ? v << shift : v >> -shift;
   return static_cast<uint8_t>(out);
 }
+
+// llvmpipe's conversion of its 16-bit blend type to an n-bit channel (n < 16),
+// measured on R10G10B10A2 (MESA_FACTS.md "llvmpipe's n-bit channels"): with
+// n >= 8 the top n bits (truncation: a fragment's 10-bit red is
+// rint(c * 65535) >> 6); fewer bits ((v >> n) * (2^n - 1) + 2^(15 - n)) >>
+// (16 - n) (2 bits: ((v >> 2) * 3 + 8192) >> 14).
+inline uint32_t unorm16ToBits(uint32_t v, int bits) {
+  if (bits >= 8) return v >> (16 - bits);
+  return ((v >> bits) * ((1u << bits) - 1u) + (1u << (15 - bits))) >> (16 - bits);
+}
+
+// An n-bit (n < 16) channel widened to llvmpipe's 16-bit blend type by bit
+// replication (10 bits: (v << 6) | (v >> 4)).
+inline uint32_t bitsToUnorm16(uint32_t v, int bits) {
+  uint32_t out = 0;
+  for (int shift = 16 - bits; shift > -bits; shift -= bits) out |= shift >= 0 ? v << shift : v >> -shift;
+  return out & 0xffffu;
+}
+
+// A float as a half float the way llvmpipe stores its float blend results
+// into R16G16B16A16_FLOAT (probed: 1024 random pixels drawn, blended and
+// cleared): rounded toward zero, denormals too, and magnitudes past the
+// largest half (65504) saturate to it (120000 stores 65504) rather than
+// becoming infinite. NaN stays NaN.
+uint16_t floatToHalf(float v);
+// Exact.
+float halfToFloat(uint16_t h);
 
 // Float [0,1] to an n-bit unsigned value as llvmpipe does it: a single-precision
 // multiply, then round to nearest even (REFERENCE.md, "Colour").

@@ -50,8 +50,19 @@ void clearColor(const ColorBuffer& c, const ColorBufferAttrib& cb, const PixelBo
     const bool* mask = cb.writeMask.data();
     const float value[4] = {cb.clearColorUnclamped.r, cb.clearColorUnclamped.g, cb.clearColorUnclamped.b,
                             cb.clearColorUnclamped.a};
+    // Mesa clears a scissored part of the buffer, or some of its channels,
+    // by drawing a quad (st_Clear): its colour is then stored as a
+    // fragment's, which differs from the clear's rounding on 16-bit and
+    // 10-bit channels (probed: 1-pixel scissored clears of RGBA16 round to
+    // nearest even, of RGB10_A2 truncate from 16 bits).
+    const bool wholeBuffer = box.x0 <= 0 && box.y0 <= 0 && box.x1 >= c.width && box.y1 >= c.height;
+    bool allChannels = true;
+    for (int k = 0; k < 4; ++k) allChannels = allChannels && (mask[k] || c.channelBits(k) == 0);
+    const bool asFragment = (!wholeBuffer || !allChannels) &&
+                            (c.channels == ChannelType::kUnorm16 || c.channels == ChannelType::kUnormWideBits);
     for (int y = std::max(box.y0, 0); y < std::min(box.y1, c.height); ++y)
-      for (int x = std::max(box.x0, 0); x < std::min(box.x1, c.width); ++x) c.writeFloat(x, y, value, mask, true);
+      for (int x = std::max(box.x0, 0); x < std::min(box.x1, c.width); ++x)
+        c.writeFloat(x, y, value, mask, !asFragment);
     return;
   }
   uint8_t value[4];
@@ -367,10 +378,13 @@ GLenum readPixels(const Framebuffer& fb, const PixelStoreAttrib& pack, GLint x, 
         // GL_FIXED_ONLY clamps them), then converted to the type.
         // 5-6-5 gives bytes by bit replication (ColorBuffer::read), as Mesa's
         // unpack to 8 bits.
+        // A framebuffer object's float attachment is in float mode: its
+        // floats are read unclamped, the other types from the clamped value.
         fb.read.readFloat(wx, wy, f);
         for (int i = 0; i < 4; ++i) {
-          f[i] = f[i] > 0.0f ? (f[i] < 1.0f ? f[i] : 1.0f) : 0.0f;
-          rgba[i] = static_cast<uint8_t>(std::nearbyint(f[i] * 255.0f));
+          const float clamped = f[i] > 0.0f ? (f[i] < 1.0f ? f[i] : 1.0f) : 0.0f;
+          if (!(fb.read.floatMode && type == GL_FLOAT)) f[i] = clamped;
+          rgba[i] = static_cast<uint8_t>(std::nearbyint(clamped * 255.0f));
         }
         if (fb.read.channels == ChannelType::kRGB565 || fb.read.channels == ChannelType::kUnormBits)
           fb.read.read(wx, wy, rgba);

@@ -18,14 +18,14 @@ RenderbufferFormat colorFormat(int r, int g, int b, int a, PixelFormat storedAs 
   f.blue = b;
   f.alpha = a;
   // Fewer than 8 bits a channel: drawn as kUnormBits, 4 bytes a pixel.
-  // Not 3-3-2: llvmpipe's conversion to 3 bits is none of truncation and
-  // rounding (bytes 21 and 24 are 0 and 1 of 7), so R3_G3_B2 is not drawn here.
-  f.unormBits = !drawable && r > 3 && r < 8 && g < 8 && b < 8 && a < 8;
-  f.drawable = drawable || f.unormBits;
+  f.unormBits = !drawable && r > 2 && r < 8 && g < 8 && b < 8 && a < 8;
+  // 10 bits (GL_RGB10_A2, GL_RGB10): 16-bit words, kUnormWideBits.
+  f.unormWideBits = !drawable && r == 10 && g == 10 && b == 10;
+  f.drawable = drawable || f.unormBits || f.unormWideBits;
   f.pixelFormat = drawable ? storedAs : PixelFormat::kRGBA;
   ColorBuffer c;
   c.setFormat(f.pixelFormat);
-  f.bytesPerPixel = c.bytesPerPixel;
+  f.bytesPerPixel = f.unormWideBits ? 8 : c.bytesPerPixel;
   return f;
 }
 
@@ -60,13 +60,22 @@ bool renderbufferFormat(GLenum internalFormat, RenderbufferFormat* out) {
     case GL_ALPHA12:
     case GL_ALPHA16: f = colorFormat(0, 0, 0, 16); break;
     case 0x8229: f = colorFormat(8, 0, 0, 0); break;  // GL_R8
-    case 0x822B: f = colorFormat(8, 8, 0, 0); break;  // GL_RG8
+    case 0x822B:  // GL_RG8: R8G8_UNORM, 2 bytes a pixel (reads (R, G, 0, 1))
+    case 0x822C:  // GL_RG16: R16G16_UNORM, 4 bytes a pixel
+      f = internalFormat == 0x822B ? colorFormat(8, 8, 0, 0) : colorFormat(16, 16, 0, 0);
+      f.redGreen = f.drawable = true;
+      f.bytesPerPixel = internalFormat == 0x822B ? 2 : 4;
+      break;
     case 0x8C43:
     case 0x8C42: f = colorFormat(8, 8, 8, 8, PixelFormat::kRGBA); break;  // GL_SRGB8_ALPHA8, GL_SRGB_ALPHA: drawn linear (no GL_FRAMEBUFFER_SRGB)
     case 0x8814: f = colorFormat(32, 32, 32, 32, PixelFormat::kRGBA32F); break;  // GL_RGBA32F
     case 0x8815: f = colorFormat(32, 32, 32, 0, PixelFormat::kRGB32F); break;    // GL_RGB32F
-    case 0x881B: f = colorFormat(16, 16, 16, 0); break;                         // GL_RGB16F
-    case 0x881A: f = colorFormat(16, 16, 16, 16); break;  // GL_RGBA16F
+    case 0x881B:  // GL_RGB16F
+    case 0x881A:  // GL_RGBA16F: half floats, kFloat16
+      f = colorFormat(16, 16, 16, internalFormat == 0x881A ? 16 : 0);
+      f.halfFloat = f.drawable = true;
+      f.bytesPerPixel = 8;
+      break;
     case GL_LUMINANCE:
     case GL_LUMINANCE4:
     case GL_LUMINANCE8:
@@ -215,8 +224,8 @@ enum class Point { kColor, kDepth, kStencil };
 // (texture/texel_format.h: four stored channels): 8-bit ones as OSMesa's
 // RGBA / RGBX bytes (sRGB ones too: written as they are without
 // GL_FRAMEBUFFER_SRGB, probed), 16-bit ones as its 16-bit buffers, fewer
-// bits as kUnormBits. False for the formats not drawn into here (10-bit ones,
-// luminance, intensity and alpha textures).
+// bits as kUnormBits, 10 bits as kUnormWideBits. False for the formats not
+// drawn into here (luminance, intensity and alpha textures).
 bool colorTexelView(texture::TexelFormat f, ColorBuffer* c) {
   const texture::TexelFormatInfo& info = texture::texelFormatInfo(f);
   // Alpha, luminance and luminance-alpha textures of 8 and 16 bits: the
@@ -238,13 +247,26 @@ bool colorTexelView(texture::TexelFormat f, ColorBuffer* c) {
       default: break;
     }
   }
+  // LUMINANCE4_ALPHA4: 4-bit luminance and alpha in a byte each, drawn as
+  // kUnormBits (llvmpipe's 8-bit blend, rounded to 4 bits).
+  if (info.baseFormat == GL_LUMINANCE_ALPHA && info.channels == 2 && info.bytesPerChannel == 1 &&
+      info.bits[0] == 4 && info.bits[1] == 4) {
+    c->setUnormBits(4, 0, 0, 4);
+    c->bytesPerPixel = info.bytesPerTexel;
+    c->green = c->blue = -1;
+    c->alpha = 1;
+    c->luminance = true;
+    return true;
+  }
   if ((info.baseFormat != GL_RGBA && info.baseFormat != GL_RGB) || info.channels != 4) return false;
   const uint8_t* b = info.bits;
   const bool alpha = info.baseFormat == GL_RGBA;
   if (info.bytesPerChannel == 1 && b[0] == 8) {
     c->setFormat(alpha ? PixelFormat::kRGBA : PixelFormat::kRGBX);
-  } else if (info.bytesPerChannel == 1 && b[0] > 3) {  // not 3-3-2 (renderbufferFormat)
+  } else if (info.bytesPerChannel == 1 && b[0] > 2) {  // 3-3-2 ... 5-6-5
     c->setUnormBits(b[0], b[1], b[2], alpha ? b[3] : 0);
+  } else if (info.bytesPerChannel == 2 && b[0] == 10) {  // RGB10A2, RGB10X2
+    c->setUnormWideBits(b[0], b[1], b[2], alpha ? b[3] : 0);
   } else if (info.bytesPerChannel == 2 && b[0] == 16) {
     c->setFormat(PixelFormat::kRGBA16);  // RGBX16: four 16-bit channels, the fourth unused
     if (!alpha) c->alpha = -1;
@@ -380,8 +402,14 @@ bool colorView(const Attachment& a, FramebufferObjects& objects, texture::Textur
     if (!rb || rb->format.kind != RenderbufferFormat::Kind::kColor || !rb->format.drawable || rb->width < 1)
       return false;
     const RenderbufferFormat& f = rb->format;
-    if (f.unormBits)
+    if (f.halfFloat)
+      c.setHalfFloat(f.alpha > 0);
+    else if (f.redGreen)
+      c.setChannels(f.red == 8 ? ChannelType::kUnorm8 : ChannelType::kUnorm16, f.bytesPerPixel, 0, 1, -1, -1);
+    else if (f.unormBits)
       c.setUnormBits(f.red, f.green, f.blue, f.alpha);
+    else if (f.unormWideBits)
+      c.setUnormWideBits(f.red, f.green, f.blue, f.alpha);
     else
       c.setFormat(f.pixelFormat);
     c.pixels = rb->storage.data();
@@ -392,6 +420,7 @@ bool colorView(const Attachment& a, FramebufferObjects& objects, texture::Textur
   }
   c.rowLength = c.width;
   c.yUp = true;
+  c.floatMode = c.floatChannels();
   *out = c;
   return true;
 }

@@ -51,6 +51,13 @@ struct RenderbufferFormat {
   // Channels of fewer than 8 bits (GL_RGBA4, GL_RGB5_A1...): stored as the
   // textures of those formats are, a byte a channel (ChannelType::kUnormBits).
   bool unormBits = false;
+  // 10-bit channels (GL_RGB10_A2, GL_RGB10): a 16-bit word a channel, 8
+  // bytes a pixel, as those textures are (ChannelType::kUnormWideBits).
+  bool unormWideBits = false;
+  // GL_RGBA16F, GL_RGB16F: half floats, 8 bytes a pixel (ChannelType::kFloat16).
+  bool halfFloat = false;
+  // GL_RG8, GL_RG16: red and green only, 8 or 16 bits (ColorBuffer::setChannels).
+  bool redGreen = false;
   int bytesPerPixel = 4;
 };
 // False for an enum glRenderbufferStorage refuses (GL_INVALID_ENUM).

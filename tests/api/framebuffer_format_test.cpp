@@ -47,6 +47,9 @@ const FormatCase kCases[] = {
     // Float: every bit of the interpolation (llvmpipe's, y up in an object).
     {true, 0x8814, {32, 32, 32, 32}, 0x8797beacu, 0xc971aafeu, 0xf8e5f55au, 0u},  // GL_RGBA32F
     {true, 0x8815, {32, 32, 32, 0}, 0x8976bcfau, 0xf6cd264fu, 0xcfb997ebu, 0u},   // GL_RGB32F
+    // Half floats: the bytes (HalfFloatStoreRoundsTowardZero checks the halves).
+    {true, 0x881A, {16, 16, 16, 16}, 0xd685266bu, 0u, 0u, 0u},  // GL_RGBA16F
+    {true, 0x881B, {16, 16, 16, 0}, 0x813f8142u, 0u, 0u, 0u},   // GL_RGB16F
     {true, 0x8C43, {8, 8, 8, 8}, 0xec22a789u, 0x09abfc1du, 0xac092f60u, 0u},  // GL_SRGB8_ALPHA8
     {false, 0x8058, {8, 8, 8, 8}, 0xec22a789u, 0x09abfc1du, 0xac092f60u, 0x09abfc1du},
     {false, 0x8051, {8, 8, 8, 0}, 0xbda075cdu, 0x4f676471u, 0x35caa80du, 0x4f676471u},
@@ -61,9 +64,20 @@ const FormatCase kCases[] = {
     {false, 0x805A, {16, 16, 16, 16}, 0x7454d310u, 0x49b70651u, 0x0aa9c3d0u, 0x49b70651u},
     {false, 0x8C43, {8, 8, 8, 8}, 0xec22a789u, 0x09abfc1du, 0xac092f60u, 0x09abfc1du},  // GL_SRGB8_ALPHA8
     {false, 0x8C41, {8, 8, 8, 0}, 0xbda075cdu, 0x4f676471u, 0x35caa80du, 0x4f676471u},  // GL_SRGB8
+    {true, 0x822B, {8, 8, 0, 0}, 0x822933deu, 0xf0d82dd7u, 0x464d73cbu, 0u},  // GL_RG8: (R, G, 0, 1)
+    {true, 0x822C, {16, 16, 0, 0}, 0x5a34fd5au, 0x5f5311d6u, 0x3b996edau, 0u},  // GL_RG16
+    // 3-3-2: ((b >> n) * (2^n - 1) + 2^(7 - n)) >> (8 - n) from the 8-bit blend.
+    {true, 0x2A10, {3, 3, 2, 0}, 0xbc31cbfcu, 0x2e16f2b3u, 0xfda829e9u, 0u},   // GL_R3_G3_B2
+    {false, 0x2A10, {3, 3, 2, 0}, 0xbc31cbfcu, 0x2e16f2b3u, 0xfda829e9u, 0x2e16f2b3u},  // GL_R3_G3_B2
+    // 10 bits: blended in llvmpipe's 16-bit type, cut to 10 (and 2) bits.
+    {true, 0x8059, {10, 10, 10, 2}, 0x445cd771u, 0x7198e7f2u, 0x562d7e32u, 0u},   // GL_RGB10_A2
+    {true, 0x8052, {10, 10, 10, 0}, 0xd9f036f9u, 0xa7f63ad6u, 0x50fc113au, 0u},   // GL_RGB10
+    {false, 0x8059, {10, 10, 10, 2}, 0x445cd771u, 0x7198e7f2u, 0x562d7e32u, 0x7198e7f2u},  // GL_RGB10_A2
+    {false, 0x8052, {10, 10, 10, 0}, 0xd9f036f9u, 0xa7f63ad6u, 0x50fc113au, 0xa7f63ad6u},  // GL_RGB10
     // Luminance-alpha textures: red goes into the luminance, read back as
     // (L, 0, 0, A); the luminance reports no size.
     {false, 0x8045, {0, 0, 0, 8}, 0x987c007fu, 0xdee99a0du, 0x6f50d625u, 0xdee99a0du},    // GL_LUMINANCE8_ALPHA8
+    {false, 0x8043, {0, 0, 0, 4}, 0xe7315ee8u, 0x96955087u, 0xa1043e6du, 0x96955087u},  // GL_LUMINANCE4_ALPHA4
     {false, 0x8048, {0, 0, 0, 16}, 0x2bfbadc9u, 0x74ba3e29u, 0x0ff6e4e9u, 0x74ba3e29u},   // GL_LUMINANCE16_ALPHA16
 };
 // clang-format on
@@ -105,6 +119,7 @@ void drawScene() {
 GLenum externalFormat(GLenum internal) {
   switch (internal) {
     case GL_RGBA8: case GL_RGBA4: case GL_RGB5_A1: case GL_RGBA2: case GL_RGBA16: case GL_RGBA12: case 0x8C43:
+    case GL_RGB10_A2:
       return GL_RGBA;
     default: return GL_RGB;
   }
@@ -245,6 +260,145 @@ TEST_F(FramebufferFormatTest, DrawIntoEveryColourFormat) {
       deleteRenderbuffers(1, &rb);
     }
     deleteFramebuffers(1, &fb);
+    EXPECT_NO_GL_ERROR();
+  }
+}
+
+// Half-float renderbuffers (Mesa, probed): clears and blends keep values
+// outside [0, 1]; the store rounds toward zero, denormal halves too, and
+// saturates at the largest half (65504); the framebuffer is in float mode,
+// so glReadPixels of floats does not clamp (nor does it on GL_RGBA32F).
+// Points at pixel centres: no interpolation, the same on any orientation.
+TEST_F(FramebufferFormatTest, HalfFloatStoreRoundsTowardZero) {
+  void (*genFramebuffers)(GLsizei, GLuint*);
+  void (*bindFramebuffer)(GLenum, GLuint);
+  GLenum (*checkFramebufferStatus)(GLenum);
+  void (*framebufferRenderbuffer)(GLenum, GLenum, GLenum, GLuint);
+  void (*genRenderbuffers)(GLsizei, GLuint*);
+  void (*bindRenderbuffer)(GLenum, GLuint);
+  void (*renderbufferStorage)(GLenum, GLenum, GLsizei, GLsizei);
+  void (*blendEquation)(GLenum);
+  load(genFramebuffers, "glGenFramebuffers");
+  load(bindFramebuffer, "glBindFramebuffer");
+  load(checkFramebufferStatus, "glCheckFramebufferStatus");
+  load(framebufferRenderbuffer, "glFramebufferRenderbuffer");
+  load(genRenderbuffers, "glGenRenderbuffers");
+  load(bindRenderbuffer, "glBindRenderbuffer");
+  load(renderbufferStorage, "glRenderbufferStorage");
+  load(blendEquation, "glBlendEquation");
+  ASSERT_NE(blendEquation, nullptr);
+  constexpr GLenum kFloatMode = 0x8820;  // GL_RGBA_FLOAT_MODE_ARB
+  EXPECT_EQ(GetInt(kFloatMode), 0);
+  for (GLenum internal : {GLenum(0x881A), GLenum(0x8814)}) {  // GL_RGBA16F, GL_RGBA32F
+    SCOPED_TRACE(testing::Message() << "renderbuffer 0x" << std::hex << internal);
+    const bool half = internal == 0x881A;
+    GLuint fb = 0, rb = 0;
+    genFramebuffers(1, &fb);
+    bindFramebuffer(kFramebuffer, fb);
+    genRenderbuffers(1, &rb);
+    bindRenderbuffer(kRenderbuffer, rb);
+    renderbufferStorage(kRenderbuffer, internal, 4, 1);
+    framebufferRenderbuffer(kFramebuffer, kColor0, kRenderbuffer, rb);
+    ASSERT_EQ(checkFramebufferStatus(kFramebuffer), kComplete);
+    EXPECT_EQ(GetInt(kFloatMode), 1);
+    glViewport(0, 0, 4, 1);
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glOrtho(0, 4, 0, 1, -1, 1);
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+    glClearColor(60000.0f, 1e-6f, -3e-7f, 2.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_DST_COLOR, GL_ONE);  // pixel 0: d * s + d
+    glBegin(GL_POINTS);
+    glColor4f(1, 1, 0.5f, 1);
+    glVertex2f(0.5f, 0.5f);
+    glEnd();
+    glBlendFunc(GL_ONE, GL_ONE);  // pixel 1: d - s
+    blendEquation(GL_FUNC_REVERSE_SUBTRACT);
+    glBegin(GL_POINTS);
+    glColor4f(0.3f, 0.7f, 1, 1);
+    glVertex2f(1.5f, 0.5f);
+    glEnd();
+    blendEquation(GL_FUNC_ADD);
+    glDisable(GL_BLEND);
+    glBegin(GL_POINTS);  // pixel 2: unblended
+    glColor4f(0.1f, 0.2f, 0.3f, 0.4f);
+    glVertex2f(2.5f, 0.5f);
+    glEnd();
+    float f[16];
+    GLubyte ub[16];
+    glReadPixels(0, 0, 4, 1, GL_RGBA, GL_FLOAT, f);
+    glReadPixels(0, 0, 4, 1, GL_RGBA, GL_UNSIGNED_BYTE, ub);
+    if (half) {
+      const float expected[12] = {65504.0f, 0x1p-19f, -0x1.cp-22f, 4.0f, 59968.0f, -0x1.664p-1f, -1.0f, 1.0f,
+                                  0x1.998p-4f, 0x1.998p-3f, 0x1.33p-2f, 0x1.998p-2f};
+      for (int i = 0; i < 12; ++i) EXPECT_EQ(f[i], expected[i]) << "float " << i;
+    } else {
+      EXPECT_EQ(f[0], 120000.0f);
+      EXPECT_EQ(f[5], 1e-6f - 0.7f);
+      EXPECT_EQ(f[8], 0.1f);
+    }
+    const GLubyte bytes[8] = {255, 0, 0, 255, 255, 0, 0, 255};
+    for (int i = 0; i < 8; ++i) EXPECT_EQ(ub[i], bytes[i]) << "byte " << i;
+    bindFramebuffer(kFramebuffer, 0);
+    EXPECT_EQ(GetInt(kFloatMode), 0);
+    EXPECT_NO_GL_ERROR();
+  }
+}
+
+// A clear of part of the buffer (scissored) is drawn by Mesa as a quad, so
+// its colour is stored as a fragment's; a clear of the whole buffer rounds
+// half up from float (probed): 0.2 clears RGB10_A2 red to 205 of 1023 but a
+// scissored 0.2 stores rint(0.2 * 65535) >> 6 = 204; 0.3 clears RGBA16 to
+// 19661, scissored to 19660.
+TEST_F(FramebufferFormatTest, ScissoredClearIsStoredAsAFragment) {
+  void (*genFramebuffers)(GLsizei, GLuint*);
+  void (*bindFramebuffer)(GLenum, GLuint);
+  GLenum (*checkFramebufferStatus)(GLenum);
+  void (*framebufferRenderbuffer)(GLenum, GLenum, GLenum, GLuint);
+  void (*genRenderbuffers)(GLsizei, GLuint*);
+  void (*bindRenderbuffer)(GLenum, GLuint);
+  void (*renderbufferStorage)(GLenum, GLenum, GLsizei, GLsizei);
+  load(genFramebuffers, "glGenFramebuffers");
+  load(bindFramebuffer, "glBindFramebuffer");
+  load(checkFramebufferStatus, "glCheckFramebufferStatus");
+  load(framebufferRenderbuffer, "glFramebufferRenderbuffer");
+  load(genRenderbuffers, "glGenRenderbuffers");
+  load(bindRenderbuffer, "glBindRenderbuffer");
+  load(renderbufferStorage, "glRenderbufferStorage");
+  ASSERT_NE(renderbufferStorage, nullptr);
+  struct Case {
+    GLenum internal;
+    float value;
+    GLushort whole, scissored;  // red read back as GL_UNSIGNED_SHORT
+  };
+  // 205 and 204 of 1023 read rint(v / 1023 * 65535).
+  for (const Case& c : {Case{GL_RGB10_A2, 0.2f, 13133, 13069}, Case{GL_RGBA16, 0.3f, 19661, 19660}}) {
+    SCOPED_TRACE(testing::Message() << "renderbuffer 0x" << std::hex << c.internal);
+    GLuint fb = 0, rb = 0;
+    genFramebuffers(1, &fb);
+    bindFramebuffer(kFramebuffer, fb);
+    genRenderbuffers(1, &rb);
+    bindRenderbuffer(kRenderbuffer, rb);
+    renderbufferStorage(kRenderbuffer, c.internal, 4, 1);
+    framebufferRenderbuffer(kFramebuffer, kColor0, kRenderbuffer, rb);
+    ASSERT_EQ(checkFramebufferStatus(kFramebuffer), kComplete);
+    glClearColor(c.value, 0, 0, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(1, 0, 1, 1);
+    glClearColor(0.9f, 0, 0, 1);  // first something else, then the value
+    glClear(GL_COLOR_BUFFER_BIT);
+    glClearColor(c.value, 0, 0, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glDisable(GL_SCISSOR_TEST);
+    GLushort us[8];
+    glReadPixels(0, 0, 2, 1, GL_RGBA, GL_UNSIGNED_SHORT, us);
+    EXPECT_EQ(us[0], c.whole);
+    EXPECT_EQ(us[4], c.scissored);
+    bindFramebuffer(kFramebuffer, 0);
     EXPECT_NO_GL_ERROR();
   }
 }

@@ -491,6 +491,8 @@ TEST_F(StateQueryTest, AdvertisedExtensionsHaveTheirCommands) {
         "glGetBufferParameterivARB", "glGetBufferPointervARB"}},
       {"GL_ARB_map_buffer_range", {"glMapBufferRange", "glFlushMappedBufferRange"}},
       {"GL_ARB_copy_buffer", {"glCopyBufferSubData"}},
+      {"GL_ARB_draw_elements_base_vertex",
+       {"glDrawElementsBaseVertex", "glDrawRangeElementsBaseVertex", "glMultiDrawElementsBaseVertex"}},
       {"GL_ARB_vertex_array_object", {"glBindVertexArray", "glDeleteVertexArrays", "glGenVertexArrays", "glIsVertexArray"}},
       {"GL_EXT_draw_range_elements", {"glDrawRangeElementsEXT"}},
       {"GL_ARB_multisample", {"glSampleCoverageARB"}},

@@ -50,6 +50,11 @@ void setPointer(Pick which, GLint size, GLint minSize, GLint maxSize, GLenum typ
 void setClientState(GLenum cap, bool enabled) {
   Context* ctx = api::contextForQuery();
   if (!ctx) return;
+  // NV_primitive_restart is enabled as a client state (glEnable refuses it).
+  if (cap == GL_PRIMITIVE_RESTART_NV) {
+    ctx->vertexArray.primitiveRestart = enabled;
+    return;
+  }
   ClientArray* a = clientArrayOfCapability(ctx->vertexArray, cap);
   if (!a) return ctx->recordError(GL_INVALID_ENUM);
   a->enabled = enabled;

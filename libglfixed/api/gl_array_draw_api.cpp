@@ -77,6 +77,27 @@ bool indexList(Context& ctx, GLsizei count, GLenum type, const void* indices, pi
   return true;
 }
 
+// NV_primitive_restart: the runs of `list` between its restart indices
+// (compared as given, before the base vertex), each a list of its own, as
+// Mesa's draw module draws them; without restart, `list` itself.
+void appendRestartRuns(const Context& ctx, const pipeline::IndexList& list, std::vector<pipeline::IndexList>& out) {
+  if (!ctx.vertexArray.primitiveRestart) return out.push_back(list);
+  const GLuint restart = ctx.vertexArray.primitiveRestartIndex;
+  const size_t bytes = list.type == GL_UNSIGNED_BYTE ? 1 : (list.type == GL_UNSIGNED_SHORT ? 2 : 4);
+  uint32_t start = 0;
+  for (uint32_t i = 0; i <= list.count; ++i) {
+    if (i < list.count && list.at(i) != restart) continue;
+    if (i > start) {
+      pipeline::IndexList run = list;
+      run.data = list.data + start * bytes;
+      run.count = i - start;
+      run.firstInBuffer = list.firstInBuffer + start;
+      out.push_back(run);
+    }
+    start = i + 1;
+  }
+}
+
 // Runs a draw; a batch too large to allocate is GL_OUT_OF_MEMORY, never an
 // exception out of the entry point.
 template <typename Draw>
@@ -98,9 +119,14 @@ void drawElements(Context& ctx, GLenum mode, GLsizei count, GLenum type, const v
   pipeline::IndexList list;
   if (!indexList(ctx, count, type, indices, list, baseVertex)) return;
   pipeline::flushVertices(ctx);
+  struct SiteRuns {};
+  std::vector<pipeline::IndexList>& runs = pipeline::threadScratch<std::vector<pipeline::IndexList>, SiteRuns>();
   guarded(ctx, [&] {
-    const pipeline::IndexBounds bounds = range ? *range : pipeline::elementBounds(ctx, src, &list, 1);
-    pipeline::drawElements(ctx, src, mode, list, bounds);
+    runs.clear();
+    appendRestartRuns(ctx, list, runs);
+    // The bounds Mesa computes leave the restart indices out.
+    const pipeline::IndexBounds bounds = range ? *range : pipeline::elementBounds(ctx, src, runs.data(), runs.size());
+    for (const pipeline::IndexList& run : runs) pipeline::drawElements(ctx, src, mode, run, bounds);
   });
 }
 
@@ -323,8 +349,16 @@ void compileDrawElements(pipeline::ListCompiler& list, GLenum mode, GLsizei coun
     return list.recordError(ctx, GL_INVALID_OPERATION);
   pipeline::IndexList elements;  // read where they lie, as a draw reads them
   if (!indexList(ctx, count, type, indices, elements, baseVertex)) return;
+  // Restart as enabled now: the list keeps the primitives it compiled.
+  const bool restart = ctx.vertexArray.primitiveRestart;
+  const GLuint restartIndex = ctx.vertexArray.primitiveRestartIndex;
   list.begin(mode, true);
-  for (uint32_t i = 0; i < elements.count; ++i) arrayElement(src, elements.element(i));
+  for (uint32_t i = 0; i < elements.count; ++i) {
+    if (restart && elements.at(i) == restartIndex)
+      list.restartPrimitive();
+    else
+      arrayElement(src, elements.element(i));
+  }
   list.end();
 }
 
@@ -339,6 +373,9 @@ extern "C" {
 GLAPI void APIENTRY glArrayElement(GLint i) {
   Context* ctx = api::context();
   if (!ctx || i < 0) return;
+  // NV_primitive_restart: the restart index is a glPrimitiveRestartNV.
+  if (ctx->vertexArray.primitiveRestart && static_cast<GLuint>(i) == ctx->vertexArray.primitiveRestartIndex)
+    return glPrimitiveRestartNV();
   pipeline::ArraySources src;
   if (pipeline::ListCompiler* list = api::listCompiler(ctx)) {
     if (resolveForList(*list, src)) arrayElement(src, static_cast<uint32_t>(i));
@@ -481,9 +518,13 @@ GLAPI void APIENTRY glMultiDrawElementsBaseVertex(GLenum mode, const GLsizei* co
   pipeline::flushVertices(*ctx);
   // One draw of several to Mesa's draw module: the index bounds it computes
   // are those of all the lists together.
+  struct SiteRuns {};
+  std::vector<pipeline::IndexList>& runs = pipeline::threadScratch<std::vector<pipeline::IndexList>, SiteRuns>();
   guarded(*ctx, [&] {
-    const pipeline::IndexBounds bounds = pipeline::elementBounds(*ctx, src, lists.data(), lists.size());
-    for (const pipeline::IndexList& list : lists) pipeline::drawElements(*ctx, src, mode, list, bounds);
+    runs.clear();
+    for (const pipeline::IndexList& list : lists) appendRestartRuns(*ctx, list, runs);
+    const pipeline::IndexBounds bounds = pipeline::elementBounds(*ctx, src, runs.data(), runs.size());
+    for (const pipeline::IndexList& run : runs) pipeline::drawElements(*ctx, src, mode, run, bounds);
   });
 }
 

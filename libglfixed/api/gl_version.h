@@ -36,7 +36,7 @@ constexpr const char* kGLExtensionsString =
     "GL_EXT_shadow_funcs GL_EXT_stencil_two_side GL_EXT_stencil_wrap GL_EXT_subtexture "
     "GL_EXT_texture GL_EXT_texture3D GL_EXT_texture_edge_clamp GL_EXT_texture_env_add "
     "GL_EXT_texture_env_combine GL_EXT_texture_env_dot3 GL_EXT_texture_lod_bias GL_EXT_texture_object "
-    "GL_EXT_vertex_array GL_EXT_vertex_array_bgra GL_INGR_blend_func_separate GL_NV_blend_square GL_NV_fog_distance GL_SGIS_generate_mipmap GL_SGIS_texture_border_clamp GL_SGIS_texture_edge_clamp "
+    "GL_EXT_vertex_array GL_EXT_vertex_array_bgra GL_INGR_blend_func_separate GL_NV_blend_square GL_NV_fog_distance GL_NV_primitive_restart GL_SGIS_generate_mipmap GL_SGIS_texture_border_clamp GL_SGIS_texture_edge_clamp "
     "GL_SGIS_texture_lod ";  // a space after the last name, as Mesa's (piglit's glinfo prints it as it is)
 
 // True if a context of version major.minor can be had (the library's own

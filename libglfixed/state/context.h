@@ -149,6 +149,7 @@ class Context {
 
   // Between glBegin and glEnd (GL 2.1 §2.6.3).
   bool insideBeginEnd = false;
+  GLenum beginEndMode = 0;  // glBegin's mode, for glPrimitiveRestartNV
   VertexBatch batch;
 
   // What Mesa's vbo module would hold (REFERENCE: "constant colours"): the

@@ -60,6 +60,10 @@ struct VertexArrayAttrib : VertexArrayObjectState {
   // The bound vertex array object (0: the default one); its state is the
   // base class. glPushClientAttrib saves the name with the state, as Mesa.
   GLuint vertexArrayBinding = 0;
+  // NV_primitive_restart: a client state (glEnableClientState), so in this
+  // group, not in an object (Mesa's gl_array_attrib).
+  bool primitiveRestart = false;
+  GLuint primitiveRestartIndex = 0;
 
   ClientArray& activeTexCoord() { return texCoord[clientActiveTexture - GL_TEXTURE0]; }
   const ClientArray& activeTexCoord() const { return texCoord[clientActiveTexture - GL_TEXTURE0]; }

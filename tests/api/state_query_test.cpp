@@ -491,6 +491,7 @@ TEST_F(StateQueryTest, AdvertisedExtensionsHaveTheirCommands) {
         "glGetBufferParameterivARB", "glGetBufferPointervARB"}},
       {"GL_ARB_map_buffer_range", {"glMapBufferRange", "glFlushMappedBufferRange"}},
       {"GL_ARB_copy_buffer", {"glCopyBufferSubData"}},
+      {"GL_NV_primitive_restart", {"glPrimitiveRestartNV", "glPrimitiveRestartIndexNV"}},
       {"GL_ARB_draw_elements_base_vertex",
        {"glDrawElementsBaseVertex", "glDrawRangeElementsBaseVertex", "glMultiDrawElementsBaseVertex"}},
       {"GL_ARB_vertex_array_object", {"glBindVertexArray", "glDeleteVertexArrays", "glGenVertexArrays", "glIsVertexArray"}},

@@ -20,7 +20,7 @@ constexpr const char* kGLVersionString = "1.5 libglfixed 0.1.0";
 constexpr const char* kGLVendorString = "libglfixed";
 constexpr const char* kGLRendererString = "libglfixed fixed-function software renderer";
 constexpr const char* kGLExtensionsString =
-    "GL_ARB_copy_buffer GL_ARB_depth_texture GL_ARB_draw_elements_base_vertex GL_ARB_framebuffer_object GL_ARB_map_buffer_range "
+    "GL_ARB_copy_buffer GL_ARB_depth_clamp GL_ARB_depth_texture GL_ARB_draw_elements_base_vertex GL_ARB_framebuffer_object GL_ARB_map_buffer_range "
     "GL_ARB_multisample GL_ARB_multitexture GL_ARB_occlusion_query GL_ARB_pixel_buffer_object "
     "GL_ARB_point_parameters GL_ARB_point_sprite GL_ARB_provoking_vertex "
     "GL_ARB_shadow GL_ARB_texture_border_clamp "

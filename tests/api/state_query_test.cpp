@@ -525,6 +525,7 @@ TEST_F(StateQueryTest, AdvertisedExtensionsHaveTheirCommands) {
         "glIsTextureEXT", "glPrioritizeTexturesEXT"}},
       {"GL_ARB_texture_border_clamp", {}},
       {"GL_ARB_depth_texture", {}},
+      {"GL_ARB_depth_clamp", {}},
       {"GL_ARB_shadow", {}},
       {"GL_ARB_point_sprite", {}},
       {"GL_ARB_texture_cube_map", {}},

@@ -17,7 +17,8 @@ VERSIONS = ["GL_VERSION_1_0", "GL_VERSION_1_1", "GL_VERSION_1_2", "GL_VERSION_1_
             "GL_VERSION_1_4", "GL_VERSION_1_5", "GL_VERSION_2_0", "GL_VERSION_2_1"]
 # Extensions the library implements (their commands are declared and exported too).
 EXTENSIONS = ["GL_ARB_provoking_vertex", "GL_EXT_provoking_vertex", "GL_ARB_map_buffer_range",
-              "GL_ARB_copy_buffer"]
+              "GL_ARB_copy_buffer", "GL_ARB_vertex_array_object", "GL_ARB_draw_elements_base_vertex",
+              "GL_NV_primitive_restart", "GL_ARB_depth_clamp"]
 
 root_dir = Path(__file__).resolve().parent.parent
 xml_path = sys.argv[1] if len(sys.argv) > 1 else "/usr/share/khronos-api/gl.xml"

@@ -1512,6 +1512,21 @@ GLAPI void APIENTRY glUniformMatrix4x3fv(GLint location, GLsizei count, GLboolea
 GLAPI void APIENTRY glCopyBufferSubData(GLenum readTarget, GLenum writeTarget, GLintptr readOffset, GLintptr writeOffset, GLsizeiptr size);
 #endif /* GL_ARB_copy_buffer */
 
+/* GL_ARB_depth_clamp */
+#ifndef GL_ARB_depth_clamp
+#define GL_ARB_depth_clamp 1
+#define GL_DEPTH_CLAMP 0x864F
+#endif /* GL_ARB_depth_clamp */
+
+/* GL_ARB_draw_elements_base_vertex */
+#ifndef GL_ARB_draw_elements_base_vertex
+#define GL_ARB_draw_elements_base_vertex 1
+GLAPI void APIENTRY glDrawElementsBaseVertex(GLenum mode, GLsizei count, GLenum type, const void * indices, GLint basevertex);
+GLAPI void APIENTRY glDrawRangeElementsBaseVertex(GLenum mode, GLuint start, GLuint end, GLsizei count, GLenum type, const void * indices, GLint basevertex);
+GLAPI void APIENTRY glDrawElementsInstancedBaseVertex(GLenum mode, GLsizei count, GLenum type, const void * indices, GLsizei instancecount, GLint basevertex);
+GLAPI void APIENTRY glMultiDrawElementsBaseVertex(GLenum mode, const GLsizei * count, GLenum type, const void *const* indices, GLsizei drawcount, const GLint * basevertex);
+#endif /* GL_ARB_draw_elements_base_vertex */
+
 /* GL_ARB_map_buffer_range */
 #ifndef GL_ARB_map_buffer_range
 #define GL_ARB_map_buffer_range 1
@@ -1535,6 +1550,16 @@ GLAPI void APIENTRY glFlushMappedBufferRange(GLenum target, GLintptr offset, GLs
 GLAPI void APIENTRY glProvokingVertex(GLenum mode);
 #endif /* GL_ARB_provoking_vertex */
 
+/* GL_ARB_vertex_array_object */
+#ifndef GL_ARB_vertex_array_object
+#define GL_ARB_vertex_array_object 1
+#define GL_VERTEX_ARRAY_BINDING 0x85B5
+GLAPI void APIENTRY glBindVertexArray(GLuint array);
+GLAPI void APIENTRY glDeleteVertexArrays(GLsizei n, const GLuint * arrays);
+GLAPI void APIENTRY glGenVertexArrays(GLsizei n, GLuint * arrays);
+GLAPI GLboolean APIENTRY glIsVertexArray(GLuint array);
+#endif /* GL_ARB_vertex_array_object */
+
 /* GL_EXT_provoking_vertex */
 #ifndef GL_EXT_provoking_vertex
 #define GL_EXT_provoking_vertex 1
@@ -1544,6 +1569,15 @@ GLAPI void APIENTRY glProvokingVertex(GLenum mode);
 #define GL_PROVOKING_VERTEX_EXT 0x8E4F
 GLAPI void APIENTRY glProvokingVertexEXT(GLenum mode);
 #endif /* GL_EXT_provoking_vertex */
+
+/* GL_NV_primitive_restart */
+#ifndef GL_NV_primitive_restart
+#define GL_NV_primitive_restart 1
+#define GL_PRIMITIVE_RESTART_NV 0x8558
+#define GL_PRIMITIVE_RESTART_INDEX_NV 0x8559
+GLAPI void APIENTRY glPrimitiveRestartNV(void);
+GLAPI void APIENTRY glPrimitiveRestartIndexNV(GLuint index);
+#endif /* GL_NV_primitive_restart */
 
 #ifdef __cplusplus
 }

@@ -27,6 +27,11 @@ void setPointer(Pick which, GLint size, GLint minSize, GLint maxSize, GLenum typ
   Context* ctx = api::contextForQuery();
   if (!ctx) return;
   if (stride < 0) return ctx->recordError(GL_INVALID_VALUE);
+  // GL 3.0 §2.10 (ARB_vertex_array_object): a named vertex array object
+  // takes no client memory, so a pointer without an array buffer is refused
+  // (a null one is not); Mesa checks it so in compatibility contexts too.
+  if (ctx->vertexArray.vertexArrayBinding != 0 && ctx->vertexArray.arrayBufferBinding == 0 && pointer)
+    return ctx->recordError(GL_INVALID_OPERATION);
   if (!oneOf(type, types)) return ctx->recordError(GL_INVALID_ENUM);
   if (bgra && size == GL_BGRA) {
     if (type != GL_UNSIGNED_BYTE) return ctx->recordError(GL_INVALID_OPERATION);
@@ -45,6 +50,11 @@ void setPointer(Pick which, GLint size, GLint minSize, GLint maxSize, GLenum typ
 void setClientState(GLenum cap, bool enabled) {
   Context* ctx = api::contextForQuery();
   if (!ctx) return;
+  // NV_primitive_restart is enabled as a client state (glEnable refuses it).
+  if (cap == GL_PRIMITIVE_RESTART_NV) {
+    ctx->vertexArray.primitiveRestart = enabled;
+    return;
+  }
   ClientArray* a = clientArrayOfCapability(ctx->vertexArray, cap);
   if (!a) return ctx->recordError(GL_INVALID_ENUM);
   a->enabled = enabled;
@@ -219,6 +229,11 @@ GLAPI void APIENTRY glPopClientAttrib(void) {
   }
   if (e.mask & GL_CLIENT_VERTEX_ARRAY_BIT) {
     VertexArrayAttrib& v = e.vertexArray;
+    // The saved object is bound again and given the saved state. One
+    // deleted since the push leaves the whole group as it is, without an
+    // error (Mesa; reference/MESA_FACTS.md, "Vertex array objects").
+    if (!ctx->vertexArrayObjects.bindable(v.vertexArrayBinding)) return;
+    ctx->vertexArrayObjects.bind(ctx->vertexArray, v.vertexArrayBinding);
     live(v.arrayBufferBinding);
     live(v.elementArrayBufferBinding);
     for (ClientArray* c :

@@ -1,5 +1,6 @@
 // Drawing from vertex arrays (GL 2.1 §2.8): glArrayElement, glDrawArrays,
-// glDrawElements, glDrawRangeElements, glMultiDrawArrays, glMultiDrawElements.
+// glDrawElements, glDrawRangeElements, glMultiDrawArrays, glMultiDrawElements,
+// and their base-vertex forms (ARB_draw_elements_base_vertex).
 // Each validates, ends the run of buffered glBegin/glEnd vertices (Mesa
 // flushes them before an array draw), then hands the draw to
 // pipeline/array_draw.h.
@@ -48,10 +49,13 @@ bool resolve(Context& ctx, pipeline::ArraySources& src) {
 
 // The `count` indices of `type` in client memory or, with an element array
 // buffer bound, in that buffer at offset `indices`; indices past the
-// buffer's end are not read (the draw ends there). False: the buffer is mapped.
-bool indexList(Context& ctx, GLsizei count, GLenum type, const void* indices, pipeline::IndexList& out) {
+// buffer's end are not read (the draw ends there); `baseVertex` is added to
+// each (ARB_draw_elements_base_vertex). False: the buffer is mapped.
+bool indexList(Context& ctx, GLsizei count, GLenum type, const void* indices, pipeline::IndexList& out,
+               GLint baseVertex = 0) {
   out = pipeline::IndexList();
   out.type = type;
+  out.baseVertex = baseVertex;
   const size_t bytes = type == GL_UNSIGNED_BYTE ? 1 : (type == GL_UNSIGNED_SHORT ? 2 : 4);
   if (const GLuint name = ctx.vertexArray.elementArrayBufferBinding) {
     const BufferObject* b = ctx.buffers.find(name);
@@ -73,6 +77,27 @@ bool indexList(Context& ctx, GLsizei count, GLenum type, const void* indices, pi
   return true;
 }
 
+// NV_primitive_restart: the runs of `list` between its restart indices
+// (compared as given, before the base vertex), each a list of its own, as
+// Mesa's draw module draws them; without restart, `list` itself.
+void appendRestartRuns(const Context& ctx, const pipeline::IndexList& list, std::vector<pipeline::IndexList>& out) {
+  if (!ctx.vertexArray.primitiveRestart) return out.push_back(list);
+  const GLuint restart = ctx.vertexArray.primitiveRestartIndex;
+  const size_t bytes = list.type == GL_UNSIGNED_BYTE ? 1 : (list.type == GL_UNSIGNED_SHORT ? 2 : 4);
+  uint32_t start = 0;
+  for (uint32_t i = 0; i <= list.count; ++i) {
+    if (i < list.count && list.at(i) != restart) continue;
+    if (i > start) {
+      pipeline::IndexList run = list;
+      run.data = list.data + start * bytes;
+      run.count = i - start;
+      run.firstInBuffer = list.firstInBuffer + start;
+      out.push_back(run);
+    }
+    start = i + 1;
+  }
+}
+
 // Runs a draw; a batch too large to allocate is GL_OUT_OF_MEMORY, never an
 // exception out of the entry point.
 template <typename Draw>
@@ -88,15 +113,20 @@ void guarded(Context& ctx, Draw draw) {
 
 // `range`: the bounds glDrawRangeElements promised, if Mesa takes them.
 void drawElements(Context& ctx, GLenum mode, GLsizei count, GLenum type, const void* indices,
-                  const pipeline::IndexBounds* range = nullptr) {
+                  const pipeline::IndexBounds* range = nullptr, GLint baseVertex = 0) {
   pipeline::ArraySources src;
   if (!resolve(ctx, src)) return;
   pipeline::IndexList list;
-  if (!indexList(ctx, count, type, indices, list)) return;
+  if (!indexList(ctx, count, type, indices, list, baseVertex)) return;
   pipeline::flushVertices(ctx);
+  struct SiteRuns {};
+  std::vector<pipeline::IndexList>& runs = pipeline::threadScratch<std::vector<pipeline::IndexList>, SiteRuns>();
   guarded(ctx, [&] {
-    const pipeline::IndexBounds bounds = range ? *range : pipeline::elementBounds(ctx, src, &list, 1);
-    pipeline::drawElements(ctx, src, mode, list, bounds);
+    runs.clear();
+    appendRestartRuns(ctx, list, runs);
+    // The bounds Mesa computes leave the restart indices out.
+    const pipeline::IndexBounds bounds = range ? *range : pipeline::elementBounds(ctx, src, runs.data(), runs.size());
+    for (const pipeline::IndexList& run : runs) pipeline::drawElements(ctx, src, mode, run, bounds);
   });
 }
 
@@ -308,7 +338,7 @@ void compileDrawArrays(pipeline::ListCompiler& list, GLenum mode, GLint first, G
 }
 
 void compileDrawElements(pipeline::ListCompiler& list, GLenum mode, GLsizei count, GLenum type,
-                         const void* indices) {
+                         const void* indices, GLint baseVertex = 0) {
   Context& ctx = *currentContext();
   if (!isPrimitiveMode(mode)) return list.recordError(ctx, GL_INVALID_ENUM);
   if (count < 0) return list.recordError(ctx, GL_INVALID_VALUE);
@@ -318,9 +348,17 @@ void compileDrawElements(pipeline::ListCompiler& list, GLenum mode, GLsizei coun
   if (const BufferObject* b = ctx.buffers.find(ctx.vertexArray.elementArrayBufferBinding); b && b->mapped)
     return list.recordError(ctx, GL_INVALID_OPERATION);
   pipeline::IndexList elements;  // read where they lie, as a draw reads them
-  if (!indexList(ctx, count, type, indices, elements)) return;
+  if (!indexList(ctx, count, type, indices, elements, baseVertex)) return;
+  // Restart as enabled now: the list keeps the primitives it compiled.
+  const bool restart = ctx.vertexArray.primitiveRestart;
+  const GLuint restartIndex = ctx.vertexArray.primitiveRestartIndex;
   list.begin(mode, true);
-  for (uint32_t i = 0; i < elements.count; ++i) arrayElement(src, elements.at(i));
+  for (uint32_t i = 0; i < elements.count; ++i) {
+    if (restart && elements.at(i) == restartIndex)
+      list.restartPrimitive();
+    else
+      arrayElement(src, elements.element(i));
+  }
   list.end();
 }
 
@@ -335,6 +373,9 @@ extern "C" {
 GLAPI void APIENTRY glArrayElement(GLint i) {
   Context* ctx = api::context();
   if (!ctx || i < 0) return;
+  // NV_primitive_restart: the restart index is a glPrimitiveRestartNV.
+  if (ctx->vertexArray.primitiveRestart && static_cast<GLuint>(i) == ctx->vertexArray.primitiveRestartIndex)
+    return glPrimitiveRestartNV();
   pipeline::ArraySources src;
   if (pipeline::ListCompiler* list = api::listCompiler(ctx)) {
     if (resolveForList(*list, src)) arrayElement(src, static_cast<uint32_t>(i));
@@ -358,13 +399,21 @@ GLAPI void APIENTRY glDrawArrays(GLenum mode, GLint first, GLsizei count) {
 }
 
 GLAPI void APIENTRY glDrawElements(GLenum mode, GLsizei count, GLenum type, const void* indices) {
+  glDrawElementsBaseVertex(mode, count, type, indices, 0);
+}
+
+// ARB_draw_elements_base_vertex (GL 3.2 §2.8.2): the base vertex is added to
+// every index; in a list it is compiled as the vertices it reads now, as
+// glDrawElements is (Mesa's save_DrawElementsBaseVertex).
+GLAPI void APIENTRY glDrawElementsBaseVertex(GLenum mode, GLsizei count, GLenum type, const void* indices,
+                                             GLint basevertex) {
   if (api::compiledDraw(
-          [&](pipeline::ListCompiler& l) { compileDrawElements(l, mode, count, type, indices); }))
+          [&](pipeline::ListCompiler& l) { compileDrawElements(l, mode, count, type, indices, basevertex); }))
     return;
   Context* ctx = drawContext(mode, count);
   if (!ctx) return;
   if (!isIndexType(type)) return ctx->recordError(GL_INVALID_ENUM);
-  drawElements(*ctx, mode, count, type, indices);
+  drawElements(*ctx, mode, count, type, indices, nullptr, basevertex);
 }
 
 // The range is a promise about the indices (GL 2.1 §2.8). Mesa passes it to
@@ -374,11 +423,18 @@ GLAPI void APIENTRY glDrawElements(GLenum mode, GLsizei count, GLenum type, cons
 // (main/draw.c).
 GLAPI void APIENTRY glDrawRangeElements(GLenum mode, GLuint start, GLuint end, GLsizei count, GLenum type,
                                         const void* indices) {
+  glDrawRangeElementsBaseVertex(mode, start, end, count, type, indices, 0);
+}
+
+// The range is of the indices as stored; the elements read are those plus
+// the base vertex (a range whose first element would be negative is dropped).
+GLAPI void APIENTRY glDrawRangeElementsBaseVertex(GLenum mode, GLuint start, GLuint end, GLsizei count,
+                                                  GLenum type, const void* indices, GLint basevertex) {
   // Mesa's save_DrawRangeElements: the checks, then compiled as glDrawElements.
   if (api::compiledDraw([&](pipeline::ListCompiler& l) {
         if (isPrimitiveMode(mode) && count >= 0 && isIndexType(type) && end < start)
           return l.recordError(*currentContext(), GL_INVALID_VALUE);
-        compileDrawElements(l, mode, count, type, indices);
+        compileDrawElements(l, mode, count, type, indices, basevertex);
       }))
     return;
   Context* ctx = drawContext(mode, count);
@@ -386,10 +442,14 @@ GLAPI void APIENTRY glDrawRangeElements(GLenum mode, GLuint start, GLuint end, G
   if (end < start) return ctx->recordError(GL_INVALID_VALUE);
   if (!isIndexType(type)) return ctx->recordError(GL_INVALID_ENUM);
   if (static_cast<GLint>(end) < 0 || start >= 2000000000u)
-    return drawElements(*ctx, mode, count, type, indices);
+    return drawElements(*ctx, mode, count, type, indices, nullptr, basevertex);
   const GLuint largest = type == GL_UNSIGNED_BYTE ? 0xffu : (type == GL_UNSIGNED_SHORT ? 0xffffu : ~0u);
-  const pipeline::IndexBounds range{true, std::min(start, largest), std::min(end, largest)};
-  drawElements(*ctx, mode, count, type, indices, &range);
+  const int64_t first = int64_t(std::min(start, largest)) + basevertex;
+  const int64_t last = int64_t(std::min(end, largest)) + basevertex;
+  if (first < 0 || last > int64_t(UINT32_MAX))
+    return drawElements(*ctx, mode, count, type, indices, nullptr, basevertex);
+  const pipeline::IndexBounds range{true, uint32_t(first), uint32_t(last)};
+  drawElements(*ctx, mode, count, type, indices, &range, basevertex);
 }
 
 // Each draw of a multi-draw is a draw of its own (Mesa hands them to the
@@ -423,6 +483,14 @@ GLAPI void APIENTRY glMultiDrawArrays(GLenum mode, const GLint* first, const GLs
 
 GLAPI void APIENTRY glMultiDrawElements(GLenum mode, const GLsizei* count, GLenum type,
                                         const void* const* indices, GLsizei drawcount) {
+  glMultiDrawElementsBaseVertex(mode, count, type, indices, drawcount, nullptr);
+}
+
+// Each list with its own base vertex (`basevertex` null: all 0).
+GLAPI void APIENTRY glMultiDrawElementsBaseVertex(GLenum mode, const GLsizei* count, GLenum type,
+                                                  const void* const* indices, GLsizei drawcount,
+                                                  const GLint* basevertex) {
+  auto base = [basevertex](GLsizei i) { return basevertex ? basevertex[i] : 0; };
   if (api::compiledDraw([&](pipeline::ListCompiler& l) {
         Context& c = *currentContext();
         if (!isPrimitiveMode(mode)) return l.recordError(c, GL_INVALID_ENUM);
@@ -430,7 +498,7 @@ GLAPI void APIENTRY glMultiDrawElements(GLenum mode, const GLsizei* count, GLenu
         if (!isIndexType(type)) return l.recordError(c, GL_INVALID_ENUM);
         if (drawcount == 0 || !count || !indices) return;
         for (GLsizei i = 0; i < drawcount; ++i)
-          if (count[i] > 0) compileDrawElements(l, mode, count[i], type, indices[i]);
+          if (count[i] > 0) compileDrawElements(l, mode, count[i], type, indices[i], base(i));
       }))
     return;
   Context* ctx = drawContext(mode, drawcount);
@@ -446,13 +514,17 @@ GLAPI void APIENTRY glMultiDrawElements(GLenum mode, const GLsizei* count, GLenu
   guarded(*ctx, [&] { lists.resize(static_cast<size_t>(drawcount)); });
   if (lists.size() != static_cast<size_t>(drawcount)) return;
   for (GLsizei i = 0; i < drawcount; ++i)
-    if (!indexList(*ctx, count[i], type, indices[i], lists[i])) return;
+    if (!indexList(*ctx, count[i], type, indices[i], lists[i], base(i))) return;
   pipeline::flushVertices(*ctx);
   // One draw of several to Mesa's draw module: the index bounds it computes
   // are those of all the lists together.
+  struct SiteRuns {};
+  std::vector<pipeline::IndexList>& runs = pipeline::threadScratch<std::vector<pipeline::IndexList>, SiteRuns>();
   guarded(*ctx, [&] {
-    const pipeline::IndexBounds bounds = pipeline::elementBounds(*ctx, src, lists.data(), lists.size());
-    for (const pipeline::IndexList& list : lists) pipeline::drawElements(*ctx, src, mode, list, bounds);
+    runs.clear();
+    for (const pipeline::IndexList& list : lists) appendRestartRuns(*ctx, list, runs);
+    const pipeline::IndexBounds bounds = pipeline::elementBounds(*ctx, src, runs.data(), runs.size());
+    for (const pipeline::IndexList& run : runs) pipeline::drawElements(*ctx, src, mode, run, bounds);
   });
 }
 

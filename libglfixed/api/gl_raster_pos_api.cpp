@@ -101,8 +101,9 @@ void rasterPos(float x, float y, float z, float w) {
   const glm::vec4 object(x, y, z, w);
   const glm::vec4 eye = transformPoint(ctx->modelview.top(), object);
   const glm::vec4 clip = transformPoint(ctx->projection.top(), eye);
-  if (clip.z > clip.w || clip.z < -clip.w || clip.x > clip.w || clip.x < -clip.w || clip.y > clip.w ||
-      clip.y < -clip.w) {
+  // GL_DEPTH_CLAMP: no near and far test; the window z stays unclamped (Mesa).
+  const bool depthOutside = !ctx->transform.depthClamp && (clip.z > clip.w || clip.z < -clip.w);
+  if (depthOutside || clip.x > clip.w || clip.x < -clip.w || clip.y > clip.w || clip.y < -clip.w) {
     rp.valid = false;
     return;
   }

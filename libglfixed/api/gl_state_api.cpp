@@ -78,6 +78,7 @@ GLAPI GLboolean APIENTRY glIsEnabled(GLenum cap) {
   // The client-state arrays (glEnableClientState) answer glIsEnabled too (§6.1.1).
   if (const ClientArray* a = clientArrayOfCapability(ctx->vertexArray, cap))
     return a->enabled ? GL_TRUE : GL_FALSE;
+  if (cap == GL_PRIMITIVE_RESTART_NV) return ctx->vertexArray.primitiveRestart ? GL_TRUE : GL_FALSE;
   ctx->recordError(GL_INVALID_ENUM);
   return GL_FALSE;
 }

@@ -107,6 +107,7 @@ GLAPI void APIENTRY glBegin(GLenum mode) {
   // _mesa_valid_prim_mode) with GL_INVALID_FRAMEBUFFER_OPERATION (probed).
   if (ctx->objectBound() && !drawFramebufferComplete(*ctx)) return;
   ctx->insideBeginEnd = true;
+  ctx->beginEndMode = mode;
   pipeline::beginPrimitive(*ctx, mode);
 }
 

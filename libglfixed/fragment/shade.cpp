@@ -116,6 +116,9 @@ ShadeTarget makeShadeTarget(const raster::RasterState& state, Framebuffer& fb,
     s.depthWidth = fb.depth.width();
     s.depthWrite = state.depthWrite;
     s.depthFunc = state.depthFunc;
+    s.depthClamp = state.depthClamp;
+    s.depthClampMin = state.depthClampMin;
+    s.depthClampMax = state.depthClampMax;
   }
   // The stencil test of the primitive's face; on a Z24S8 buffer the depth
   // test too goes through the stencil step, which keeps the stencil byte.

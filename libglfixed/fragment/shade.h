@@ -42,6 +42,8 @@ struct ShadeTarget {
   int depthWidth = 0;
   bool depthWrite = true;
   GLenum depthFunc = GL_LESS;
+  bool depthClamp = false;  // ARB_depth_clamp
+  float depthClampMin = 0, depthClampMax = 1;
   // The depth test after the colour (llvmpipe's late depth test, when the
   // fragment's colour can discard it: the alpha test), else before it.
   bool lateDepth = false;

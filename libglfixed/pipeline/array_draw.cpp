@@ -161,7 +161,7 @@ IndexBounds elementBounds(const Context& ctx, const ArraySources& src, const Ind
   b.min = UINT32_MAX;
   for (size_t d = 0; d < count; ++d)
     for (uint32_t i = 0; i < lists[d].count; ++i) {
-      const uint32_t e = lists[d].at(i);
+      const uint32_t e = lists[d].element(i);
       b.min = std::min(b.min, e);
       b.max = std::max(b.max, e);
       b.valid = true;
@@ -199,7 +199,7 @@ void drawArrays(Context& ctx, const ArraySources& src, GLenum mode, uint32_t fir
 void drawElements(Context& ctx, const ArraySources& src, GLenum mode, const IndexList& indices,
                   const IndexBounds& bounds) {
   if (!src.vertex || indices.count == 0) return;
-  auto elementAt = [&indices](size_t k) { return indices.at(k); };
+  auto elementAt = [&indices](size_t k) { return indices.element(k); };
   if (isPointsOrLines(mode))
     return drawPointsOrLines(ctx, src, mode, indices.count, elementAt, Submission::kDrawElements);
   const uint32_t count = primitive::trimVertexCount(mode, indices.count);

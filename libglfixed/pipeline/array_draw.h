@@ -31,11 +31,16 @@ struct IndexList {
   // buffer's last index: array_draw.cpp.)
   size_t firstInBuffer = 0;
   size_t bufferIndices = SIZE_MAX;
-  uint32_t at(size_t i) const;
+  // ARB_draw_elements_base_vertex: added to every index before the arrays
+  // are read (the sum wraps as an unsigned 32-bit index).
+  int32_t baseVertex = 0;
+  uint32_t at(size_t i) const;  // the index as stored
+  uint32_t element(size_t i) const { return at(i) + static_cast<uint32_t>(baseVertex); }
 };
 
-// The range of the indices, as the program promised it (glDrawRangeElements)
-// or as Mesa computes it; `valid` false: Mesa knows no range.
+// The range of the elements read (the indices plus the base vertex), as the
+// program promised it (glDrawRangeElements) or as Mesa computes it; `valid`
+// false: Mesa knows no range.
 struct IndexBounds {
   bool valid = false;
   uint32_t min = 0, max = 0;

@@ -127,6 +127,7 @@ void ListCompiler::recordError(Context& ctx, GLenum error) {
 
 void ListCompiler::begin(GLenum mode, bool fromArrays) {
   lastBeginFromArrays_ = fromArrays;
+  beginMode_ = mode;
   VertexNode& n = *node_;
   ListPrimitive p;
   p.mode = mode;

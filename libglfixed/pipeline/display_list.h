@@ -112,6 +112,13 @@ class ListCompiler {
   // `fromArrays`: the glBegin/glEnd of a glDrawArrays or glDrawElements.
   void begin(GLenum mode, bool fromArrays = false);
   void end();
+  // glPrimitiveRestartNV between the list's glBegin and glEnd: an end and a
+  // begin of the same mode.
+  void restartPrimitive() {
+    const GLenum mode = beginMode_;
+    end();
+    begin(mode, lastBeginFromArrays_);
+  }
   void vertex(const glm::vec4& position);
   void color(const glm::vec4& c);
   void edgeFlag(bool flag);  // polygon area
@@ -153,6 +160,7 @@ class ListCompiler {
   std::shared_ptr<VertexNode> node_ = std::make_shared<VertexNode>();
   bool insideBeginEnd_ = false;
   bool lastBeginFromArrays_ = false;
+  GLenum beginMode_ = GL_POINTS;  // the open glBegin's mode
   glm::vec4 color_{1, 1, 1, 1};
   bool edgeFlag_ = true;  // polygon area
   glm::vec3 normal_{0, 0, 1};

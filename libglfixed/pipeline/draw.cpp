@@ -24,6 +24,7 @@ namespace {
 // the current projection, recomputed whenever the projection changes).
 primitive::UserClipPlanes userClipPlanes(const Context& ctx) {
   primitive::UserClipPlanes u;
+  u.depthClamp = ctx.transform.depthClamp;
   for (int i = 0; i < kMaxClipPlanes; ++i)
     if (ctx.transform.clipPlaneEnabled[i]) u.enabled |= 1u << i;
   if (u.enabled == 0) return u;
@@ -105,6 +106,11 @@ primitive::PrimitiveState primitiveState(const Context& ctx, GLenum mode, bool s
   // Without a depth buffer the depth test always passes (GL 2.1 §4.1.6).
   r.depthTest = ctx.depth.test && ctx.framebuffer.depth.bits() > 0;
   r.depthFunc = ctx.depth.func;
+  // GL_DEPTH_CLAMP: fragment depth clamped to the depth range, as floats
+  // (llvmpipe clamps to the viewport's min and max depth).
+  r.depthClamp = ctx.transform.depthClamp;
+  r.depthClampMin = static_cast<float>(std::min(ctx.viewport.depthNear, ctx.viewport.depthFar));
+  r.depthClampMax = static_cast<float>(std::max(ctx.viewport.depthNear, ctx.viewport.depthFar));
   r.depthWrite = ctx.depth.writeMask;
   for (int i = 0; i < 4; ++i) r.colorWrite[i] = ctx.colorBuffer.writeMask[i];
   {

@@ -324,6 +324,12 @@ void drawTexturedQuad(Context& ctx, const texture::TextureObject* object,
   ps.constantPrimary = true;
   ps.raster = pixelRectRasterState(ctx);
   ps.raster.textures = object ? &stage : nullptr;
+  // GL_DEPTH_CLAMP: the quad is not clipped at the near and far planes, and
+  // its depth is clamped to the viewport the state tracker sets for it,
+  // whose depth range is [0, 1] (st_cb_drawpixels.c, cso_set_viewport_dims).
+  ps.userClipPlanes.depthClamp = ctx.transform.depthClamp;
+  ps.raster.depthClampMin = 0.0f;
+  ps.raster.depthClampMax = 1.0f;
   ps.raster.texCoordUnits = 1;
   if (depth) ps.raster.depthImage = *depth;
   if (depth && depth->stencil) writeStencilImageState(ctx, depth->depth != nullptr, ps.raster);

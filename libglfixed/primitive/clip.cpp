@@ -52,6 +52,7 @@ glm::vec4 transformPlane(const glm::vec4& v, const glm::mat4& m) {
 
 uint32_t clipMask(const glm::vec4& c, const UserClipPlanes& user) {
   uint32_t m = clipMask(c);
+  if (user.depthClamp) m &= ~((1u << 4) | (1u << 5));
   for (uint32_t planes = user.enabled; planes != 0; planes &= planes - 1) {
     const int i = __builtin_ctz(planes);
     const glm::vec4& p = user.plane[i];

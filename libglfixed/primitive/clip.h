@@ -40,6 +40,8 @@ constexpr int kFirstUserClipPlane = 6;  // clip mask bit of GL_CLIP_PLANE0
 struct UserClipPlanes {
   uint32_t enabled = 0;  // bit i: GL_CLIP_PLANEi
   std::array<glm::vec4, kMaxUserClipPlanes> plane{};
+  // GL_DEPTH_CLAMP: the near and far planes (4, 5) clip nothing.
+  bool depthClamp = false;
 };
 inline const UserClipPlanes kNoUserClipPlanes{};
 

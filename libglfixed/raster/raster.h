@@ -50,6 +50,8 @@ struct RasterState {
   bool depthTest = false;
   GLenum depthFunc = GL_LESS;
   bool depthWrite = true;
+  bool depthClamp = false;  // ARB_depth_clamp: depth in [depthClampMin, depthClampMax]
+  float depthClampMin = 0, depthClampMax = 1;
   bool colorWrite[4] = {true, true, true, true};
   // The stencil test (both faces) and which winding faces front
   // (glFrontFace): a triangle's set-up gives its facing (PrimitiveSetup).

@@ -34,6 +34,9 @@ struct TransformAttrib {
   GLenum matrixMode = GL_MODELVIEW;
   bool normalize = false;
   bool rescaleNormal = false;
+  // ARB_depth_clamp (GL 3.2 §2.17): no near and far clipping; fragment depth
+  // clamped to the depth range. In GL_TRANSFORM_BIT and GL_ENABLE_BIT.
+  bool depthClamp = false;
   // Client clip planes (§2.12), in eye space as glClipPlane stored them
   // (float, as Mesa's EyeUserPlane; api/gl_clip_api.cpp).
   std::array<glm::vec4, kMaxClipPlanes> clipPlane{};

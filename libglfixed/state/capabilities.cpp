@@ -64,6 +64,8 @@ constexpr Capability kTable[] = {
           kDirtyLighting, kSettable),
     entry(GL_RESCALE_NORMAL, field<&Context::transform, &TransformAttrib::rescaleNormal>, GL_TRANSFORM_BIT,
           kDirtyLighting, kSettable),
+    entry(GL_DEPTH_CLAMP, field<&Context::transform, &TransformAttrib::depthClamp>, GL_TRANSFORM_BIT, 0,
+          kSettable),
     // The evaluators (§5.1): GL_EVAL_BIT and GL_ENABLE_BIT both hold them.
     entry(GL_AUTO_NORMAL, field<&Context::eval, &EvalAttrib::autoNormal>, GL_EVAL_BIT, 0, kSettable),
     entry(GL_MAP1_COLOR_4, map1<0>, GL_EVAL_BIT, 0, kSettable),

@@ -33,7 +33,7 @@ struct Capability {
 };
 
 // The number of entries in the table (checked where it is defined).
-constexpr int kCapabilityCount = 72;
+constexpr int kCapabilityCount = 73;
 
 // Every capability, in table order.
 const std::array<Capability, kCapabilityCount>& capabilities();

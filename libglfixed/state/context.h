@@ -27,6 +27,7 @@
 #include "state/pixel_maps.h"
 #include "state/query_objects.h"
 #include "state/vertex_array_attrib.h"
+#include "state/vertex_array_objects.h"
 #include "state/raster_pos.h"
 #include "state/render_mode.h"
 #include "texture/texture_objects.h"
@@ -67,6 +68,7 @@ class Context {
   PixelStoreAttrib pixelStore;
   LightingAttrib lighting;
   VertexArrayAttrib vertexArray;
+  VertexArrayObjects vertexArrayObjects;  // the objects not bound (ARB_vertex_array_object)
   BufferObjects buffers;
   // GL_COPY_READ_BUFFER and GL_COPY_WRITE_BUFFER (ARB_copy_buffer): binding
   // points for glCopyBufferSubData, in no attribute group: glPopClientAttrib
@@ -147,6 +149,7 @@ class Context {
 
   // Between glBegin and glEnd (GL 2.1 §2.6.3).
   bool insideBeginEnd = false;
+  GLenum beginEndMode = 0;  // glBegin's mode, for glPrimitiveRestartNV
   VertexBatch batch;
 
   // What Mesa's vbo module would hold (REFERENCE: "constant colours"): the

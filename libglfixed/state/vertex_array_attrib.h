@@ -1,5 +1,7 @@
 // The vertex arrays (GL 2.1 §2.8, tables 6.6-6.8): the GL_CLIENT_VERTEX_ARRAY_BIT
 // group of glPushClientAttrib, one struct so that push and pop are a copy.
+// Its arrays and element array binding are the state of the bound vertex
+// array object (ARB_vertex_array_object, state/vertex_array_objects.h).
 #pragma once
 
 #include <GL/gl.h>
@@ -33,7 +35,10 @@ struct ClientArray {
   }
 };
 
-struct VertexArrayAttrib {
+// What a vertex array object holds (ARB_vertex_array_object, GL 3.0 table
+// 6.6-6.9 without GL_ARRAY_BUFFER_BINDING and GL_CLIENT_ACTIVE_TEXTURE, which
+// stay context state, as in Mesa).
+struct VertexArrayObjectState {
   ClientArray vertex = ClientArray::make(4, GL_FLOAT);
   ClientArray normal = ClientArray::make(3, GL_FLOAT);
   ClientArray color = ClientArray::make(4, GL_FLOAT);
@@ -45,10 +50,20 @@ struct VertexArrayAttrib {
                                              ClientArray::make(4, GL_FLOAT), ClientArray::make(4, GL_FLOAT),
                                              ClientArray::make(4, GL_FLOAT), ClientArray::make(4, GL_FLOAT),
                                              ClientArray::make(4, GL_FLOAT), ClientArray::make(4, GL_FLOAT)};
-  GLenum clientActiveTexture = GL_TEXTURE0;
-  // Table 6.8 puts these bindings in the vertex-array group too.
-  GLuint arrayBufferBinding = 0;
+  // Table 6.8 puts this binding in the vertex-array group; GL 3.0 in the object.
   GLuint elementArrayBufferBinding = 0;
+};
+
+struct VertexArrayAttrib : VertexArrayObjectState {
+  GLenum clientActiveTexture = GL_TEXTURE0;
+  GLuint arrayBufferBinding = 0;  // table 6.8, the vertex-array group
+  // The bound vertex array object (0: the default one); its state is the
+  // base class. glPushClientAttrib saves the name with the state, as Mesa.
+  GLuint vertexArrayBinding = 0;
+  // NV_primitive_restart: a client state (glEnableClientState), so in this
+  // group, not in an object (Mesa's gl_array_attrib).
+  bool primitiveRestart = false;
+  GLuint primitiveRestartIndex = 0;
 
   ClientArray& activeTexCoord() { return texCoord[clientActiveTexture - GL_TEXTURE0]; }
   const ClientArray& activeTexCoord() const { return texCoord[clientActiveTexture - GL_TEXTURE0]; }

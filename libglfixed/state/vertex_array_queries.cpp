@@ -95,6 +95,9 @@ bool getVertexArrayState(const Context& ctx, GLenum pname, GLdouble* out, int* c
     case GL_MAX_TEXTURE_COORDS: out[0] = kMaxTextureCoords; return true;
     case GL_ARRAY_BUFFER_BINDING: out[0] = a.arrayBufferBinding; return true;
     case GL_ELEMENT_ARRAY_BUFFER_BINDING: out[0] = a.elementArrayBufferBinding; return true;
+    case GL_VERTEX_ARRAY_BINDING: out[0] = a.vertexArrayBinding; return true;
+    case GL_PRIMITIVE_RESTART_NV: out[0] = a.primitiveRestart; return true;
+    case GL_PRIMITIVE_RESTART_INDEX_NV: out[0] = a.primitiveRestartIndex; return true;
     case GL_PIXEL_PACK_BUFFER_BINDING: out[0] = ctx.pixelStore.pixelPackBufferBinding; return true;
     case GL_PIXEL_UNPACK_BUFFER_BINDING: out[0] = ctx.pixelStore.pixelUnpackBufferBinding; return true;
     case GL_COPY_READ_BUFFER: out[0] = ctx.copyBuffer.read; return true;  // = GL_COPY_READ_BUFFER_BINDING

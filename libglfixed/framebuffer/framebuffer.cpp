@@ -27,39 +27,31 @@ void ColorBuffer::setFormat(PixelFormat f) {
   }
 }
 
-void ColorBuffer::setUnormBits(int r, int g, int b, int a) {
+// The object formats' layout: R, G, B and (when there is one) A in that
+// order, each channel in `bytesPerPixel / 4` bytes.
+void ColorBuffer::setRgbaLayout(ChannelType type, int pixelBytes, bool withAlpha) {
   format = PixelFormat::kRGBA;
-  channels = ChannelType::kUnormBits;
-  bytesPerPixel = 4;
-  red = 0;
-  green = 1;
-  blue = 2;
-  alpha = a > 0 ? 3 : -1;
-  const int v[4] = {r, g, b, a};
-  for (int k = 0; k < 4; ++k) bits[k] = static_cast<uint8_t>(v[k]);
-}
-
-void ColorBuffer::setUnormWideBits(int r, int g, int b, int a) {
-  format = PixelFormat::kRGBA;
-  channels = ChannelType::kUnormWideBits;
-  bytesPerPixel = 8;
-  red = 0;
-  green = 1;
-  blue = 2;
-  alpha = a > 0 ? 3 : -1;
-  const int v[4] = {r, g, b, a};
-  for (int k = 0; k < 4; ++k) bits[k] = static_cast<uint8_t>(v[k]);
-}
-
-void ColorBuffer::setHalfFloat(bool withAlpha) {
-  format = PixelFormat::kRGBA;
-  channels = ChannelType::kFloat16;
-  bytesPerPixel = 8;
+  channels = type;
+  bytesPerPixel = pixelBytes;
   red = 0;
   green = 1;
   blue = 2;
   alpha = withAlpha ? 3 : -1;
 }
+
+void ColorBuffer::setUnormBits(int r, int g, int b, int a) {
+  setRgbaLayout(ChannelType::kUnormBits, 4, a > 0);
+  const int v[4] = {r, g, b, a};
+  for (int k = 0; k < 4; ++k) bits[k] = static_cast<uint8_t>(v[k]);
+}
+
+void ColorBuffer::setUnormWideBits(int r, int g, int b, int a) {
+  setRgbaLayout(ChannelType::kUnormWideBits, 8, a > 0);
+  const int v[4] = {r, g, b, a};
+  for (int k = 0; k < 4; ++k) bits[k] = static_cast<uint8_t>(v[k]);
+}
+
+void ColorBuffer::setHalfFloat(bool withAlpha) { setRgbaLayout(ChannelType::kFloat16, 8, withAlpha); }
 
 uint16_t floatToHalf(float v) {
   uint32_t b;

@@ -80,6 +80,11 @@ struct ColorBuffer {
   // indices (-1: not stored), `bytesPerPixel` in all: the texels of
   // alpha, luminance and luminance-alpha textures.
   void setChannels(ChannelType type, int bytesPerPixel, int r, int g, int b, int a);
+
+ private:
+  void setRgbaLayout(ChannelType type, int bytesPerPixel, bool withAlpha);
+
+ public:
   // Luminance: GL_RED_BITS... report 0, as Mesa does for such attachments.
   bool luminance = false;
   // A framebuffer object's float attachment: Mesa's framebuffer is then in

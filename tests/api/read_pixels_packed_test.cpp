@@ -253,6 +253,14 @@ TEST_F(ReadPixelsPackedTest, FromFramebufferObjects) {
       {0x8059, 3351175054u},  // GL_RGB10_A2
       {0x8814, 3041040839u},  // GL_RGBA32F
       {0x881A, 3534414266u},  // GL_RGBA16F
+      {0x8054, 3720786024u},  // GL_RGB16
+      {0x805A, 3041040839u},  // GL_RGBA12
+      {0x8050, 2136506966u},  // GL_RGB5
+      {0x804F, 4050076486u},  // GL_RGB4
+      {0x8055, 3504089127u},  // GL_RGBA2
+      {0x8815, 3720786024u},  // GL_RGB32F
+      {0x881B, 2469816178u},  // GL_RGB16F
+      {0x8C43, 2034648721u},  // GL_SRGB8_ALPHA8
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(testing::Message() << "renderbuffer 0x" << std::hex << c.internalFormat);

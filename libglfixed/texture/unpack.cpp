@@ -615,8 +615,15 @@ void packImage(const TextureImage& image, const ClientLayout& layout, GLenum for
           const bool viaBytes = viaBytesFormat(image.format);
           uint8_t rgbaBytes[4] = {0, 0, 0, 0};
           if (viaBytes) {
-            if (texelFormatInfo(image.format).fitsUnorm8) {
+            const TexelFormatInfo& info = texelFormatInfo(image.format);
+            if (info.fitsUnorm8) {
               decodeTexelUnorm8(image.format, texel, rgbaBytes);
+              // Luminance and intensity to red alone, as texelToRGBA maps them (table 6.1).
+              if (info.baseFormat == GL_LUMINANCE || info.baseFormat == GL_INTENSITY ||
+                  info.baseFormat == GL_LUMINANCE_ALPHA) {
+                rgbaBytes[1] = rgbaBytes[2] = 0;
+                if (info.baseFormat != GL_LUMINANCE_ALPHA) rgbaBytes[3] = 255;
+              }
             } else {
               for (int n = 0; n < 4; ++n)
                 rgbaBytes[n] = static_cast<uint8_t>(std::nearbyint(clamp01(rgba[n]) * 255.0f));

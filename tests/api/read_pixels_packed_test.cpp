@@ -286,7 +286,11 @@ TEST_F(ReadPixelsPackedTest, GetTexImage) {
     GLenum internalFormat;
     uint32_t expected;
   };
-  const Case cases[] = {{GL_RGBA8, 875313729u}, {GL_RGB5_A1, 2636283248u}, {GL_RGBA16, 4240274134u}};
+  const Case cases[] = {{GL_RGBA8, 875313729u}, {GL_RGB5_A1, 2636283248u}, {GL_RGBA16, 4240274134u},
+                        {GL_RGB8, 1449917910u},           {GL_RGBA4, 3502512166u},           {GL_R3_G3_B2, 58071467u},
+                        {GL_RGB10_A2, 116188510u},       {GL_RGB16, 443302351u},           {GL_LUMINANCE8, 3376758409u},
+                        {GL_LUMINANCE8_ALPHA8, 253785909u}, {GL_INTENSITY8, 3376758409u},   {GL_ALPHA8, 4022442369u},
+                        {GL_LUMINANCE16, 2024651317u},    {GL_RGB5, 647158524u},            {GL_LUMINANCE4_ALPHA4, 1342421868u}};
   for (const Case& c : cases) {
     SCOPED_TRACE(testing::Message() << "internal format 0x" << std::hex << c.internalFormat);
     g_seed = 21;

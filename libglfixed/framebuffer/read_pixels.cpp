@@ -122,9 +122,8 @@ int bytesOf(GLenum type) {
   }
 }
 
-// A packed colour type (table 3.8), or 0 bytes.
-texture::Packed packedColorType(GLenum type) { return texture::packedType(type); }
-bool isPacked(GLenum type) { return packedColorType(type).bytes > 0; }
+// A packed colour type (table 3.8; texture/unpack.h).
+bool isPacked(GLenum type) { return texture::packedType(type).bytes > 0; }
 
 // EXT_packed_depth_stencil and ARB_depth_buffer_float's depth-stencil pixels.
 bool isDepthStencilType(GLenum type) {
@@ -241,7 +240,6 @@ void storeColorComponent(uint8_t* dst, GLenum type, float f, int byte) {
   }
 }
 
-
 // One pixel's components (in the format's order) as a packed element
 // (table 3.8), rounded as Mesa packs them (measured; reference/MESA_FACTS.md
 // "Packed pixel types"): 8-bit fields take the byte `b`; with `viaBytes`
@@ -280,7 +278,7 @@ uint32_t packElement(const texture::Packed& packed, const float c[4], const uint
 size_t packedImageBytes(const PixelStoreAttrib& pack, GLsizei width, GLsizei height, GLenum format, GLenum type) {
   if (width <= 0 || height <= 0 || !isKnownFormat(format) || !isKnownType(type)) return 0;
   const int componentBytes = isPacked(type) || isDepthStencilType(type) ? 1 : bytesOf(type);
-  const size_t pixelBytes = isPacked(type)            ? packedColorType(type).bytes
+  const size_t pixelBytes = isPacked(type)            ? texture::packedType(type).bytes
                             : isDepthStencilType(type) ? depthStencilBytes(type)
                                                        : static_cast<size_t>(componentsOf(format)) * componentBytes;
   const size_t rowPixels = pack.packRowLength > 0 ? pack.packRowLength : width;
@@ -304,7 +302,7 @@ GLenum readPixels(const Framebuffer& fb, const PixelStoreAttrib& pack, GLint x, 
   if ((stencil || depthStencil) && fb.depth.stencilBits() == 0) return GL_INVALID_OPERATION;
   if ((format == GL_DEPTH_COMPONENT || depthStencil) && fb.depth.bits() == 0) return GL_INVALID_OPERATION;
   // §3.6.4: a packed type only with a format of its component count (3: GL_RGB, 4: GL_RGBA or GL_BGRA).
-  const texture::Packed packed = packedColorType(type);
+  const texture::Packed packed = texture::packedType(type);
   if (packed.bytes && packed.fields == 3 && format != GL_RGB) return GL_INVALID_OPERATION;
   if (packed.bytes && packed.fields == 4 && format != GL_RGBA && format != GL_BGRA) return GL_INVALID_OPERATION;
   if (!packed.bytes && !isDepthStencilType(type) && bytesOf(type) == 0) return GL_INVALID_OPERATION;  // GL_BITMAP
@@ -452,7 +450,15 @@ GLenum readPixels(const Framebuffer& fb, const PixelStoreAttrib& pack, GLint x, 
         const bool viaBytes =
             !colorTransfer && rb.channels != ChannelType::kFloat32 && rb.channels != ChannelType::kFloat16;
         const uint32_t v = packElement(packed, c, b, viaBytes, viaBytes && rgba8);
-        std::memcpy(dst, &v, packed.bytes);  // native byte order, as Mesa
+        // In native byte order, as Mesa writes it.
+        if (packed.bytes == 1) {
+          *dst = static_cast<uint8_t>(v);
+        } else if (packed.bytes == 2) {
+          const uint16_t v16 = static_cast<uint16_t>(v);
+          std::memcpy(dst, &v16, 2);
+        } else {
+          std::memcpy(dst, &v, 4);
+        }
         continue;
       }
       if (type == GL_UNSIGNED_BYTE) {  // the common case: bytes as they are

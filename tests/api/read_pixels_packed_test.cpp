@@ -206,6 +206,7 @@ TEST(ReadPixelsPackedBufferTypeTest, FromOSMesaBuffersOfOtherTypes) {
       {OSMESA_RGBA, GL_UNSIGNED_SHORT, 8, false, 692198139u}, {OSMESA_RGBA, GL_UNSIGNED_SHORT, 8, true, 4133840820u},
       {OSMESA_RGBA, GL_FLOAT, 16, false, 692198139u},
       {OSMESA_RGB_565, GL_UNSIGNED_SHORT_5_6_5, 2, true, 863968214u},
+      {OSMESA_BGRA, GL_UNSIGNED_BYTE, 4, false, 692198139u},  // not RGBA8: its 10-bit fields from floats
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(testing::Message() << "buffer type 0x" << std::hex << c.type << (c.floats ? " floats" : " bytes"));

@@ -1,6 +1,7 @@
 #include "framebuffer/read_pixels.h"
 
 #include "framebuffer/stencil_index.h"
+#include "texture/unpack.h"
 
 #include <algorithm>
 #include <cmath>
@@ -121,7 +122,8 @@ int bytesOf(GLenum type) {
   }
 }
 
-bool isPacked8888(GLenum type) { return type == GL_UNSIGNED_INT_8_8_8_8 || type == GL_UNSIGNED_INT_8_8_8_8_REV; }
+// A packed colour type (table 3.8; texture/unpack.h).
+bool isPacked(GLenum type) { return texture::packedType(type).bytes > 0; }
 
 // EXT_packed_depth_stencil and ARB_depth_buffer_float's depth-stencil pixels.
 bool isDepthStencilType(GLenum type) {
@@ -238,12 +240,45 @@ void storeColorComponent(uint8_t* dst, GLenum type, float f, int byte) {
   }
 }
 
+// One pixel's components (in the format's order) as a packed element
+// (table 3.8), rounded as Mesa packs them (measured; reference/MESA_FACTS.md
+// "Packed pixel types"): 8-bit fields take the byte `b`; with `viaBytes`
+// (Mesa's ubyte intermediate) narrower fields the byte rescaled and rounded,
+// and with `replicateBytes` (an RGBA8 source) 10-bit fields the byte with its
+// high bits replicated below; the rest from the float `c` (clamped to [0, 1])
+// as (uint)(c * (2^n - 1) + 0.5) in float.
+uint32_t packElement(const texture::Packed& packed, const float c[4], const uint8_t b[4], bool viaBytes,
+                     bool replicateBytes) {
+  uint32_t v = 0;
+  int used = 0;
+  const int total = packed.bytes * 8;
+  for (int n = 0; n < packed.fields; ++n) {
+    const int w = packed.width[n];
+    const int shift = packed.reversed ? used : total - used - w;
+    used += w;
+    const uint32_t max = (1u << w) - 1;
+    uint32_t field;
+    if (w == 8) {
+      field = b[n];
+    } else if (w < 8 && viaBytes) {
+      field = (b[n] * max + 127) / 255;  // never a tie: 255 is odd
+    } else if (w == 10 && replicateBytes) {
+      field = (uint32_t{b[n]} << 2) | (b[n] >> 6);
+    } else {
+      const float x = c[n] > 0.0f ? (c[n] < 1.0f ? c[n] : 1.0f) : 0.0f;
+      field = static_cast<uint32_t>(x * static_cast<float>(max) + 0.5f);
+    }
+    v |= field << shift;
+  }
+  return v;
+}
+
 }  // namespace
 
 size_t packedImageBytes(const PixelStoreAttrib& pack, GLsizei width, GLsizei height, GLenum format, GLenum type) {
   if (width <= 0 || height <= 0 || !isKnownFormat(format) || !isKnownType(type)) return 0;
-  const int componentBytes = isPacked8888(type) || isDepthStencilType(type) ? 1 : bytesOf(type);
-  const size_t pixelBytes = isPacked8888(type)        ? 4
+  const int componentBytes = isPacked(type) || isDepthStencilType(type) ? 1 : bytesOf(type);
+  const size_t pixelBytes = isPacked(type)            ? texture::packedType(type).bytes
                             : isDepthStencilType(type) ? depthStencilBytes(type)
                                                        : static_cast<size_t>(componentsOf(format)) * componentBytes;
   const size_t rowPixels = pack.packRowLength > 0 ? pack.packRowLength : width;
@@ -266,9 +301,11 @@ GLenum readPixels(const Framebuffer& fb, const PixelStoreAttrib& pack, GLint x, 
   const bool stencil = format == GL_STENCIL_INDEX, depthStencil = format == GL_DEPTH_STENCIL;
   if ((stencil || depthStencil) && fb.depth.stencilBits() == 0) return GL_INVALID_OPERATION;
   if ((format == GL_DEPTH_COMPONENT || depthStencil) && fb.depth.bits() == 0) return GL_INVALID_OPERATION;
-  if (isPacked8888(type) && format != GL_RGBA && format != GL_BGRA) return GL_INVALID_OPERATION;
-  if (!isPacked8888(type) && !isDepthStencilType(type) && bytesOf(type) == 0)
-    return GL_INVALID_OPERATION;  // other packed types: not yet
+  // §3.6.4: a packed type only with a format of its component count (3: GL_RGB, 4: GL_RGBA or GL_BGRA).
+  const texture::Packed packed = texture::packedType(type);
+  if (packed.bytes && packed.fields == 3 && format != GL_RGB) return GL_INVALID_OPERATION;
+  if (packed.bytes && packed.fields == 4 && format != GL_RGBA && format != GL_BGRA) return GL_INVALID_OPERATION;
+  if (!packed.bytes && !isDepthStencilType(type) && bytesOf(type) == 0) return GL_INVALID_OPERATION;  // GL_BITMAP
   const bool depth =
       format == GL_DEPTH_COMPONENT || stencil || depthStencil;  // read from the depth-stencil buffer
   // Mesa: colour from a read buffer of GL_NONE is an invalid operation.
@@ -278,8 +315,8 @@ GLenum readPixels(const Framebuffer& fb, const PixelStoreAttrib& pack, GLint x, 
   const int components = componentsOf(format);
   const bool colorTransfer =
       transfer.scale != glm::vec4(1) || transfer.bias != glm::vec4(0) || (transfer.mapColor && maps);
-  const int componentBytes = isPacked8888(type) || isDepthStencilType(type) ? 1 : bytesOf(type);
-  const int pixelBytes = isPacked8888(type)         ? 4
+  const int componentBytes = packed.bytes || isDepthStencilType(type) ? 1 : bytesOf(type);
+  const int pixelBytes = packed.bytes               ? packed.bytes
                          : isDepthStencilType(type) ? depthStencilBytes(type)
                                                     : components * componentBytes;
   const int rowPixels = pack.packRowLength > 0 ? pack.packRowLength : width;
@@ -399,14 +436,29 @@ GLenum readPixels(const Framebuffer& fb, const PixelStoreAttrib& pack, GLint x, 
           rgba[i] = static_cast<uint8_t>(std::nearbyint(std::clamp(f[i], 0.0f, 1.0f) * 255.0f));
         }
       }
-      if (isPacked8888(type)) {
-        // 8_8_8_8: the first component in the highest byte; _REV: in the lowest.
-        const uint8_t c[4] = {format == GL_BGRA ? rgba[2] : rgba[0], rgba[1], format == GL_BGRA ? rgba[0] : rgba[2],
-                              rgba[3]};
-        uint32_t v = type == GL_UNSIGNED_INT_8_8_8_8_REV
-                         ? (uint32_t(c[3]) << 24) | (uint32_t(c[2]) << 16) | (uint32_t(c[1]) << 8) | c[0]
-                         : (uint32_t(c[0]) << 24) | (uint32_t(c[1]) << 16) | (uint32_t(c[2]) << 8) | c[3];
-        std::memcpy(dst, &v, 4);
+      if (packed.bytes) {
+        const bool bgra = format == GL_BGRA;
+        const float c[4] = {bgra ? f[2] : f[0], f[1], bgra ? f[0] : f[2], f[3]};
+        const uint8_t b[4] = {bgra ? rgba[2] : rgba[0], rgba[1], bgra ? rgba[0] : rgba[2], rgba[3]};
+        // Mesa's _mesa_format_convert: from an RGBA8 buffer (in that byte
+        // order) it packs the bytes; from the others, for types of at most 8
+        // bits a channel, through bytes as it unpacks them, else through
+        // floats; float and half-float buffers, and anything after pixel
+        // transfer, through floats.
+        const ColorBuffer& rb = fb.read;
+        const bool rgba8 = bytes && rb.red == 0 && rb.green == 1 && rb.blue == 2 && rb.alpha == 3;
+        const bool viaBytes =
+            !colorTransfer && rb.channels != ChannelType::kFloat32 && rb.channels != ChannelType::kFloat16;
+        const uint32_t v = packElement(packed, c, b, viaBytes, viaBytes && rgba8);
+        // In native byte order, as Mesa writes it.
+        if (packed.bytes == 1) {
+          *dst = static_cast<uint8_t>(v);
+        } else if (packed.bytes == 2) {
+          const uint16_t v16 = static_cast<uint16_t>(v);
+          std::memcpy(dst, &v16, 2);
+        } else {
+          std::memcpy(dst, &v, 4);
+        }
         continue;
       }
       if (type == GL_UNSIGNED_BYTE) {  // the common case: bytes as they are

@@ -17,6 +17,24 @@
 
 namespace glfixed::texture {
 
+Packed packedType(GLenum type) {
+  switch (type) {
+    case GL_UNSIGNED_BYTE_3_3_2: return {1, 3, {3, 3, 2, 0}, false};
+    case GL_UNSIGNED_BYTE_2_3_3_REV: return {1, 3, {3, 3, 2, 0}, true};
+    case GL_UNSIGNED_SHORT_5_6_5: return {2, 3, {5, 6, 5, 0}, false};
+    case GL_UNSIGNED_SHORT_5_6_5_REV: return {2, 3, {5, 6, 5, 0}, true};
+    case GL_UNSIGNED_SHORT_4_4_4_4: return {2, 4, {4, 4, 4, 4}, false};
+    case GL_UNSIGNED_SHORT_4_4_4_4_REV: return {2, 4, {4, 4, 4, 4}, true};
+    case GL_UNSIGNED_SHORT_5_5_5_1: return {2, 4, {5, 5, 5, 1}, false};
+    case GL_UNSIGNED_SHORT_1_5_5_5_REV: return {2, 4, {5, 5, 5, 1}, true};
+    case GL_UNSIGNED_INT_8_8_8_8: return {4, 4, {8, 8, 8, 8}, false};
+    case GL_UNSIGNED_INT_8_8_8_8_REV: return {4, 4, {8, 8, 8, 8}, true};
+    case GL_UNSIGNED_INT_10_10_10_2: return {4, 4, {10, 10, 10, 2}, false};
+    case GL_UNSIGNED_INT_2_10_10_10_REV: return {4, 4, {10, 10, 10, 2}, true};
+    default: return {};
+  }
+}
+
 namespace {
 
 bool isDepthStencilType(GLenum type) {
@@ -40,32 +58,6 @@ int componentsOf(GLenum format) {
     case GL_RGBA:
     case GL_BGRA: return 4;
     default: return 0;
-  }
-}
-
-// A packed type (table 3.8): its size and the widths of its fields in
-// component order; REV types put the first component in the low bits.
-struct Packed {
-  int bytes = 0;
-  int fields = 0;
-  int width[4] = {0, 0, 0, 0};
-  bool reversed = false;
-};
-Packed packedType(GLenum type) {
-  switch (type) {
-    case GL_UNSIGNED_BYTE_3_3_2: return {1, 3, {3, 3, 2, 0}, false};
-    case GL_UNSIGNED_BYTE_2_3_3_REV: return {1, 3, {3, 3, 2, 0}, true};
-    case GL_UNSIGNED_SHORT_5_6_5: return {2, 3, {5, 6, 5, 0}, false};
-    case GL_UNSIGNED_SHORT_5_6_5_REV: return {2, 3, {5, 6, 5, 0}, true};
-    case GL_UNSIGNED_SHORT_4_4_4_4: return {2, 4, {4, 4, 4, 4}, false};
-    case GL_UNSIGNED_SHORT_4_4_4_4_REV: return {2, 4, {4, 4, 4, 4}, true};
-    case GL_UNSIGNED_SHORT_5_5_5_1: return {2, 4, {5, 5, 5, 1}, false};
-    case GL_UNSIGNED_SHORT_1_5_5_5_REV: return {2, 4, {5, 5, 5, 1}, true};
-    case GL_UNSIGNED_INT_8_8_8_8: return {4, 4, {8, 8, 8, 8}, false};
-    case GL_UNSIGNED_INT_8_8_8_8_REV: return {4, 4, {8, 8, 8, 8}, true};
-    case GL_UNSIGNED_INT_10_10_10_2: return {4, 4, {10, 10, 10, 2}, false};
-    case GL_UNSIGNED_INT_2_10_10_10_REV: return {4, 4, {10, 10, 10, 2}, true};
-    default: return {};
   }
 }
 
@@ -537,6 +529,22 @@ void writeElement(uint8_t* p, int bytes, uint32_t v) {
 // One Z24S8 texel as GL_DEPTH_STENCIL (the depth in the top 24 bits of
 // GL_UNSIGNED_INT_24_8, as a float before the stencil word of
 // GL_FLOAT_32_UNSIGNED_INT_24_8_REV) or as GL_STENCIL_INDEX, the index
+// Formats whose packed-type reads Mesa converts through bytes (its ubyte
+// intermediate): the unsigned normalized colour formats of up to 16 bits.
+bool viaBytesFormat(TexelFormat f) {
+  switch (f) {
+    case TexelFormat::RGBA8: case TexelFormat::RGBX8: case TexelFormat::L8: case TexelFormat::A8:
+    case TexelFormat::I8: case TexelFormat::L8A8: case TexelFormat::L4A4: case TexelFormat::RGBA4:
+    case TexelFormat::RGBX4: case TexelFormat::RGB5X1: case TexelFormat::RGB5A1: case TexelFormat::R5G6B5:
+    case TexelFormat::R3G3B2: case TexelFormat::RGB10X2: case TexelFormat::RGB10A2: case TexelFormat::RGBA16:
+    case TexelFormat::RGBX16: case TexelFormat::L16: case TexelFormat::A16: case TexelFormat::I16:
+    case TexelFormat::L16A16:
+      return true;
+    default:
+      return false;
+  }
+}
+
 // (Mesa gives it for a depth-stencil texture).
 void packDepthStencil(const uint8_t* texel, GLenum format, GLenum type, uint8_t* out) {
   const uint32_t depth24 = storedChannel(TexelFormat::Z24S8, texel, 0), stencil = texelStencil(texel);
@@ -598,6 +606,32 @@ void packImage(const TextureImage& image, const ClientLayout& layout, GLenum for
         }
         uint8_t* out = row + size_t(i) * layout.groupBytes;
         if (packed.bytes) {
+          // As Mesa's _mesa_format_convert packs them (measured; MESA_FACTS.md
+          // "Packed pixel types"): from RGBA8, the bytes (10-bit fields the
+          // byte with its high bits replicated below); from other unorm
+          // formats of at most 16 bits, fields of at most 8 bits through the
+          // bytes Mesa unpacks (n-bit channels bit-replicated, 16-bit ones
+          // rounded), wider ones through the float; the rest through the float.
+          const bool viaBytes = viaBytesFormat(image.format);
+          uint8_t rgbaBytes[4] = {0, 0, 0, 0};
+          if (viaBytes) {
+            const TexelFormatInfo& info = texelFormatInfo(image.format);
+            if (info.fitsUnorm8) {
+              decodeTexelUnorm8(image.format, texel, rgbaBytes);
+              // Luminance and intensity to red alone, as texelToRGBA maps them (table 6.1).
+              if (info.baseFormat == GL_LUMINANCE || info.baseFormat == GL_INTENSITY ||
+                  info.baseFormat == GL_LUMINANCE_ALPHA) {
+                rgbaBytes[1] = rgbaBytes[2] = 0;
+                if (info.baseFormat != GL_LUMINANCE_ALPHA) rgbaBytes[3] = 255;
+              }
+            } else {
+              for (int n = 0; n < 4; ++n)
+                rgbaBytes[n] = static_cast<uint8_t>(std::nearbyint(clamp01(rgba[n]) * 255.0f));
+            }
+          }
+          const bool bgra = format == GL_BGRA;
+          const uint8_t b[4] = {bgra ? rgbaBytes[2] : rgbaBytes[0], rgbaBytes[1], bgra ? rgbaBytes[0] : rgbaBytes[2],
+                                rgbaBytes[3]};
           uint32_t v = 0;
           int used = 0;
           const int total = packed.bytes * 8;
@@ -606,7 +640,14 @@ void packImage(const TextureImage& image, const ClientLayout& layout, GLenum for
             const int shift = packed.reversed ? used : total - used - w;
             used += w;
             const uint32_t max = (1u << w) - 1;
-            v |= static_cast<uint32_t>(std::nearbyint(clamp01(c[n]) * static_cast<float>(max))) << shift;
+            uint32_t field;
+            if (viaBytes && w <= 8)
+              field = (b[n] * max + 127) / 255;  // never a tie: 255 is odd
+            else if (viaBytes && w == 10 && image.format == TexelFormat::RGBA8)
+              field = (uint32_t{b[n]} << 2) | (b[n] >> 6);
+            else
+              field = static_cast<uint32_t>(clamp01(c[n]) * static_cast<float>(max) + 0.5f);
+            v |= field << shift;
           }
           writeElement(out, packed.bytes, v);
         } else if (format == GL_DEPTH_COMPONENT && (type == GL_UNSIGNED_INT || type == GL_INT)) {

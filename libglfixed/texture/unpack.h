@@ -17,6 +17,17 @@
 
 namespace glfixed::texture {
 
+// A packed type (GL 2.1 table 3.8): its size in bytes and the widths of its
+// fields in component order; REV types put the first component in the low
+// bits. bytes is 0 for a type that is not packed (and for GL_BITMAP).
+struct Packed {
+  int bytes = 0;
+  int fields = 0;
+  int width[4] = {0, 0, 0, 0};
+  bool reversed = false;
+};
+Packed packedType(GLenum type);
+
 // The error a (format, type) pair of client pixel data gives (GL 2.1
 // §3.6.4; Mesa's _mesa_error_check_format_and_type): GL_INVALID_ENUM for an
 // unknown format or type or GL_BITMAP with a colour format,

@@ -228,6 +228,7 @@ enum class Point { kColor, kDepth, kStencil };
 // drawn into here (luminance, intensity and alpha textures).
 bool colorTexelView(texture::TexelFormat f, ColorBuffer* c) {
   const texture::TexelFormatInfo& info = texture::texelFormatInfo(f);
+  if (info.floating) return false;  // ARB_texture_float images are not drawn into here
   // Alpha, luminance and luminance-alpha textures of 8 and 16 bits: the
   // fragment's red goes into the luminance (Mesa, probed: an L8 texture
   // reads back as (L, 0, 0, 1), A8 as (0, 0, 0, A)).

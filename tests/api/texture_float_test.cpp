@@ -305,5 +305,78 @@ TEST_F(TextureFloatTest, EnvironmentIntoFloatBuffer) {
   OSMesaDestroyContext(ctx);
 }
 
+
+// A float RGBA or RGB texture is a complete colour attachment and is drawn
+// into unclamped (the framebuffer is in float mode); its 16F texels are the
+// half float renderbuffer's.
+TEST_F(TextureFloatTest, DrawsIntoFloatTextureAttachments) {
+  // The commands through OSMesaGetProcAddress (GL 2.1's headers lack them).
+  constexpr GLenum kFramebuffer = 0x8D40, kColorAttachment0 = 0x8CE0, kComplete = 0x8CD5;
+  auto genFramebuffers = reinterpret_cast<void (*)(GLsizei, GLuint*)>(OSMesaGetProcAddress("glGenFramebuffersEXT"));
+  auto deleteFramebuffers =
+      reinterpret_cast<void (*)(GLsizei, const GLuint*)>(OSMesaGetProcAddress("glDeleteFramebuffersEXT"));
+  auto bindFramebuffer = reinterpret_cast<void (*)(GLenum, GLuint)>(OSMesaGetProcAddress("glBindFramebufferEXT"));
+  auto framebufferTexture2D = reinterpret_cast<void (*)(GLenum, GLenum, GLenum, GLuint, GLint)>(
+      OSMesaGetProcAddress("glFramebufferTexture2DEXT"));
+  auto checkStatus = reinterpret_cast<GLenum (*)(GLenum)>(OSMesaGetProcAddress("glCheckFramebufferStatusEXT"));
+  ASSERT_TRUE(genFramebuffers && deleteFramebuffers && bindFramebuffer && framebufferTexture2D && checkStatus);
+  GLuint src = 0;
+  glGenTextures(1, &src);
+  glBindTexture(GL_TEXTURE_2D, src);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F_ARB, 4, 1, 0, GL_RGBA, GL_FLOAT, kTexels);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  struct Case {
+    GLenum format;
+    float pixel1[4], pixel4[4];
+  } cases[] = {
+      {GL_RGBA32F_ARB, {0.774999976f, -0.149999991f, -0.0625f, 0.637499988f}, {1.14999998f, 0.1875f, 0.424999982f, -0.018749997f}},
+      {GL_RGBA16F_ARB, {0.774902344f, -0.149902344f, -0.0625f, 0.637207031f}, {1.14941406f, 0.1875f, 0.424804688f, -0.018737793f}},
+      {GL_RGB32F_ARB, {0.774999976f, -0.149999991f, -0.0625f, 1}, {1.14999998f, 0.1875f, 0.424999982f, 1}},
+      {GL_RGB16F_ARB, {0.774902344f, -0.149902344f, -0.0625f, 1}, {1.14941406f, 0.1875f, 0.424804688f, 1}},
+  };
+  for (const Case& c : cases) {
+    GLuint tex = 0, fb = 0;
+    glGenTextures(1, &tex);
+    glBindTexture(GL_TEXTURE_2D, tex);
+    glTexImage2D(GL_TEXTURE_2D, 0, c.format, 8, 4, 0, GL_RGBA, GL_FLOAT, nullptr);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    genFramebuffers(1, &fb);
+    bindFramebuffer(kFramebuffer, fb);
+    framebufferTexture2D(kFramebuffer, kColorAttachment0, GL_TEXTURE_2D, tex, 0);
+    ASSERT_EQ(checkStatus(kFramebuffer), kComplete) << std::hex << c.format;
+    glViewport(0, 0, 8, 4);
+    glClearColor(0.25f, 0.5f, 0.75f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glBindTexture(GL_TEXTURE_2D, src);
+    glEnable(GL_TEXTURE_2D);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
+    glColor4f(0.5f, 0.75f, 1.0f, 0.5f);
+    glBegin(GL_TRIANGLES);
+    glTexCoord2f(0, 0);
+    glVertex2f(-1, -1);
+    glTexCoord2f(1, 0);
+    glVertex2f(1, -1);
+    glTexCoord2f(1, 1);
+    glVertex2f(1, 1);
+    glEnd();
+    glDisable(GL_TEXTURE_2D);
+    float read[8 * 4 * 4], got[8 * 4 * 4];
+    glReadPixels(0, 0, 8, 4, GL_RGBA, GL_FLOAT, read);
+    bindFramebuffer(kFramebuffer, 0);
+    glBindTexture(GL_TEXTURE_2D, tex);
+    glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_FLOAT, got);
+    ASSERT_NO_GL_ERROR();
+    for (int k = 0; k < 4; ++k) {
+      EXPECT_EQ(read[k], (k == 0 ? 0.25f : k == 1 ? 0.5f : k == 2 ? 0.75f : 1.0f)) << k;  // the clear colour
+      EXPECT_EQ(read[4 + k], c.pixel1[k]) << std::hex << c.format << std::dec << " " << k;
+      EXPECT_EQ(read[16 + k], c.pixel4[k]) << std::hex << c.format << std::dec << " " << k;
+    }
+    for (int k = 0; k < 8 * 4 * 4; ++k) EXPECT_EQ(got[k], read[k]) << std::hex << c.format << std::dec << " " << k;
+    deleteFramebuffers(1, &fb);
+    glDeleteTextures(1, &tex);
+  }
+}
+
 }  // namespace
 }  // namespace glfx_test

@@ -341,6 +341,13 @@ GLAPI void APIENTRY glGetTexLevelParameterfv(GLenum target, GLint level, GLenum 
   *params = static_cast<GLfloat>(v);
 }
 
+namespace {
+GLint componentType(const TextureImage& image, int size) {
+  if (size == 0) return GL_NONE;
+  return texture::texelFormatInfo(image.format).floating ? GL_FLOAT : GL_UNSIGNED_NORMALIZED_ARB;
+}
+}  // namespace
+
 GLAPI void APIENTRY glGetTexLevelParameteriv(GLenum target, GLint level, GLenum pname, GLint* params) {
   Context* ctx = api::contextForQuery();
   if (!ctx) return;
@@ -374,6 +381,15 @@ GLAPI void APIENTRY glGetTexLevelParameteriv(GLenum target, GLint level, GLenum 
     case GL_TEXTURE_DEPTH_SIZE: v = sizes.depth; break;
     case 0x88F1: v = sizes.stencil; break;  // GL_TEXTURE_STENCIL_SIZE (EXT_packed_depth_stencil)
     case GL_TEXTURE_COMPRESSED: v = GL_FALSE; break;  // stored uncompressed
+    // ARB_texture_float: a component's type, GL_NONE where it has no bits
+    // (Mesa gives GL_UNSIGNED_NORMALIZED_ARB for the other formats).
+    case GL_TEXTURE_RED_TYPE_ARB: v = componentType(image, sizes.red); break;
+    case GL_TEXTURE_GREEN_TYPE_ARB: v = componentType(image, sizes.green); break;
+    case GL_TEXTURE_BLUE_TYPE_ARB: v = componentType(image, sizes.blue); break;
+    case GL_TEXTURE_ALPHA_TYPE_ARB: v = componentType(image, sizes.alpha); break;
+    case GL_TEXTURE_LUMINANCE_TYPE_ARB: v = componentType(image, sizes.luminance); break;
+    case GL_TEXTURE_INTENSITY_TYPE_ARB: v = componentType(image, sizes.intensity); break;
+    case GL_TEXTURE_DEPTH_TYPE_ARB: v = componentType(image, sizes.depth); break;
     case GL_TEXTURE_COMPRESSED_IMAGE_SIZE:
       // Not a compressed image (GL 2.1 §6.1.3).
       return ctx->recordError(GL_INVALID_OPERATION);

@@ -24,7 +24,7 @@ constexpr const char* kGLExtensionsString =
     "GL_ARB_point_parameters GL_ARB_point_sprite GL_ARB_provoking_vertex "
     "GL_ARB_shadow GL_ARB_texture_border_clamp "
     "GL_ARB_texture_cube_map GL_ARB_texture_env_add GL_ARB_texture_env_combine GL_ARB_texture_env_crossbar "
-    "GL_ARB_texture_env_dot3 GL_ARB_texture_mirrored_repeat GL_ARB_texture_non_power_of_two "
+    "GL_ARB_texture_env_dot3 GL_ARB_texture_float GL_ARB_texture_mirrored_repeat GL_ARB_texture_non_power_of_two "
     "GL_ARB_transpose_matrix GL_ARB_vertex_array_object GL_ARB_vertex_buffer_object GL_ARB_window_pos GL_ATI_blend_equation_separate "
     "GL_ATI_separate_stencil GL_EXT_bgra "
     "GL_EXT_blend_color GL_EXT_blend_equation_separate GL_EXT_blend_func_separate GL_EXT_blend_minmax "

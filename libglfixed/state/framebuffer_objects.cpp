@@ -228,6 +228,20 @@ enum class Point { kColor, kDepth, kStencil };
 // drawn into here (luminance, intensity and alpha textures).
 bool colorTexelView(texture::TexelFormat f, ColorBuffer* c) {
   const texture::TexelFormatInfo& info = texture::texelFormatInfo(f);
+  // ARB_texture_float: RGBA and RGB ones are drawn as the float
+  // renderbuffers are (four floats or four halves a texel, an RGB one's
+  // fourth unused); the float luminance, intensity and alpha ones are not
+  // drawn into here (Mesa draws into them).
+  if (info.floating) {
+    if (info.baseFormat != GL_RGBA && info.baseFormat != GL_RGB) return false;
+    if (info.bits[0] == 32) {
+      c->setFormat(PixelFormat::kRGBA32F);
+      if (info.baseFormat == GL_RGB) c->alpha = -1;
+    } else {
+      c->setHalfFloat(info.baseFormat == GL_RGBA);
+    }
+    return true;
+  }
   // Alpha, luminance and luminance-alpha textures of 8 and 16 bits: the
   // fragment's red goes into the luminance (Mesa, probed: an L8 texture
   // reads back as (L, 0, 0, 1), A8 as (0, 0, 0, A)).

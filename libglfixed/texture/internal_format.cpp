@@ -20,7 +20,9 @@ GLenum baseInternalFormat(GLint internalFormat) {
     case GL_COMPRESSED_LUMINANCE:
     case GL_SLUMINANCE:
     case GL_SLUMINANCE8:
-    case GL_COMPRESSED_SLUMINANCE: return GL_LUMINANCE;
+    case GL_COMPRESSED_SLUMINANCE:
+    case GL_LUMINANCE32F_ARB:
+    case GL_LUMINANCE16F_ARB: return GL_LUMINANCE;
     case 2:
     case GL_LUMINANCE_ALPHA:
     case GL_LUMINANCE4_ALPHA4:
@@ -32,13 +34,19 @@ GLenum baseInternalFormat(GLint internalFormat) {
     case GL_COMPRESSED_LUMINANCE_ALPHA:
     case GL_SLUMINANCE_ALPHA:
     case GL_SLUMINANCE8_ALPHA8:
-    case GL_COMPRESSED_SLUMINANCE_ALPHA: return GL_LUMINANCE_ALPHA;
+    case GL_COMPRESSED_SLUMINANCE_ALPHA:
+    case GL_LUMINANCE_ALPHA32F_ARB:
+    case GL_LUMINANCE_ALPHA16F_ARB: return GL_LUMINANCE_ALPHA;
+    case GL_ALPHA32F_ARB:
+    case GL_ALPHA16F_ARB:
     case GL_ALPHA:
     case GL_ALPHA4:
     case GL_ALPHA8:
     case GL_ALPHA12:
     case GL_ALPHA16:
     case GL_COMPRESSED_ALPHA: return GL_ALPHA;
+    case GL_INTENSITY32F_ARB:
+    case GL_INTENSITY16F_ARB:
     case GL_INTENSITY:
     case GL_INTENSITY4:
     case GL_INTENSITY8:
@@ -57,7 +65,9 @@ GLenum baseInternalFormat(GLint internalFormat) {
     case GL_COMPRESSED_RGB:
     case GL_SRGB:
     case GL_SRGB8:
-    case GL_COMPRESSED_SRGB: return GL_RGB;
+    case GL_COMPRESSED_SRGB:
+    case GL_RGB32F_ARB:
+    case GL_RGB16F_ARB: return GL_RGB;
     case 4:
     case GL_RGBA:
     case GL_RGBA2:
@@ -70,7 +80,9 @@ GLenum baseInternalFormat(GLint internalFormat) {
     case GL_COMPRESSED_RGBA:
     case GL_SRGB_ALPHA:
     case GL_SRGB8_ALPHA8:
-    case GL_COMPRESSED_SRGB_ALPHA: return GL_RGBA;
+    case GL_COMPRESSED_SRGB_ALPHA:
+    case GL_RGBA32F_ARB:
+    case GL_RGBA16F_ARB: return GL_RGBA;
     case GL_DEPTH_COMPONENT:
     case GL_DEPTH_COMPONENT16:
     case GL_DEPTH_COMPONENT24:
@@ -173,6 +185,19 @@ TexelFormat chooseTexelFormat(GLint internalFormat, GLenum format, GLenum type) 
     case GL_SLUMINANCE_ALPHA:
     case GL_SLUMINANCE8_ALPHA8: return TexelFormat::SL8A8;
     case GL_RGB10_A2: return TexelFormat::RGB10A2;
+    // ARB_texture_float: llvmpipe has every one of them (sizes probed).
+    case GL_RGBA32F_ARB: return TexelFormat::RGBA32F;
+    case GL_RGB32F_ARB: return TexelFormat::RGBX32F;
+    case GL_ALPHA32F_ARB: return TexelFormat::A32F;
+    case GL_INTENSITY32F_ARB: return TexelFormat::I32F;
+    case GL_LUMINANCE32F_ARB: return TexelFormat::L32F;
+    case GL_LUMINANCE_ALPHA32F_ARB: return TexelFormat::L32A32F;
+    case GL_RGBA16F_ARB: return TexelFormat::RGBA16F;
+    case GL_RGB16F_ARB: return TexelFormat::RGBX16F;
+    case GL_ALPHA16F_ARB: return TexelFormat::A16F;
+    case GL_INTENSITY16F_ARB: return TexelFormat::I16F;
+    case GL_LUMINANCE16F_ARB: return TexelFormat::L16F;
+    case GL_LUMINANCE_ALPHA16F_ARB: return TexelFormat::L16A16F;
     case GL_RGBA12:
     case GL_RGBA16: return TexelFormat::RGBA16;
     default: break;

@@ -41,6 +41,18 @@ const TexelFormatInfo kInfo[] = {
     {4, true, GL_RGB, 4, 1, {8, 8, 8, 0}, true},           // SRGBX8
     {1, true, GL_LUMINANCE, 1, 1, {8, 0, 0, 0}, true},     // SL8
     {2, true, GL_LUMINANCE_ALPHA, 2, 1, {8, 8, 0, 0}, true},  // SL8A8
+    {16, false, GL_RGBA, 4, 4, {32, 32, 32, 32}, false, true},     // RGBA32F
+    {16, false, GL_RGB, 4, 4, {32, 32, 32, 0}, false, true},       // RGBX32F
+    {4, false, GL_ALPHA, 1, 4, {32, 0, 0, 0}, false, true},        // A32F
+    {4, false, GL_INTENSITY, 1, 4, {32, 0, 0, 0}, false, true},    // I32F
+    {4, false, GL_LUMINANCE, 1, 4, {32, 0, 0, 0}, false, true},    // L32F
+    {8, false, GL_LUMINANCE_ALPHA, 2, 4, {32, 32, 0, 0}, false, true},  // L32A32F
+    {8, false, GL_RGBA, 4, 2, {16, 16, 16, 16}, false, true},      // RGBA16F
+    {8, false, GL_RGB, 4, 2, {16, 16, 16, 0}, false, true},        // RGBX16F
+    {2, false, GL_ALPHA, 1, 2, {16, 0, 0, 0}, false, true},        // A16F
+    {2, false, GL_INTENSITY, 1, 2, {16, 0, 0, 0}, false, true},    // I16F
+    {2, false, GL_LUMINANCE, 1, 2, {16, 0, 0, 0}, false, true},    // L16F
+    {4, false, GL_LUMINANCE_ALPHA, 2, 2, {16, 16, 0, 0}, false, true},  // L16A16F
 };
 static_assert(sizeof(kInfo) / sizeof(kInfo[0]) == static_cast<size_t>(TexelFormat::Count),
               "one row per TexelFormat");
@@ -131,11 +143,73 @@ void decodeTexelUnorm8(TexelFormat format, const uint8_t* texel, uint8_t rgba[4]
   expand<uint8_t>(info.baseFormat, c, 255, rgba);
 }
 
+uint16_t floatToHalf(float f) {
+  uint32_t x;
+  std::memcpy(&x, &f, 4);
+  const uint16_t sign = static_cast<uint16_t>((x >> 16) & 0x8000u);
+  const uint32_t absBits = x & 0x7fffffffu;
+  if (absBits > 0x7f800000u) return static_cast<uint16_t>(sign | 0x7e00u | ((absBits >> 13) & 0x3ffu));  // NaN
+  if (absBits == 0x7f800000u) return static_cast<uint16_t>(sign | 0x7c00u);                                // inf
+  const int exp = static_cast<int>(absBits >> 23) - 127;
+  if (exp > 15) return static_cast<uint16_t>(sign | 0x7bffu);  // past 65504: the largest half
+  if (exp >= -14) return static_cast<uint16_t>(sign | uint32_t(exp + 15) << 10 | (absBits & 0x7fffffu) >> 13);
+  if (exp < -25) return sign;
+  // A denormal half: the mantissa with its implicit one, shifted, truncated.
+  const uint32_t mant = (absBits & 0x7fffffu) | 0x800000u;
+  return static_cast<uint16_t>(sign | mant >> (-exp - 1));
+}
+
+uint16_t floatToHalfNearest(float f) {
+  uint32_t x;
+  std::memcpy(&x, &f, 4);
+  const uint16_t sign = static_cast<uint16_t>((x >> 16) & 0x8000u);
+  const uint32_t absBits = x & 0x7fffffffu;
+  if (absBits > 0x7f800000u) return static_cast<uint16_t>(sign | 0x7e00u | ((absBits >> 13) & 0x3ffu));  // NaN
+  if (absBits >= 0x477ff000u) return static_cast<uint16_t>(sign | 0x7c00u);  // 65520 and up: infinity
+  if (absBits >= 0x38800000u) {  // a normal half (2^-14 and up)
+    uint32_t m = absBits - (112u << 23);
+    m += 0xfffu + ((m >> 13) & 1u);
+    return static_cast<uint16_t>(sign | m >> 13);
+  }
+  // A denormal half, in units of 2^-24: the scaling is exact, the rounding to even.
+  const float units = std::nearbyint(std::fabs(f) * 16777216.0f);
+  return static_cast<uint16_t>(sign | static_cast<uint32_t>(units));
+}
+
+float halfToFloat(uint16_t h) {
+  const uint32_t sign = uint32_t(h & 0x8000u) << 16;
+  const uint32_t exp = (h >> 10) & 0x1fu, mant = h & 0x3ffu;
+  uint32_t x;
+  if (exp == 0x1f) {
+    x = sign | 0x7f800000u | mant << 13;
+  } else if (exp == 0) {
+    const float v = static_cast<float>(mant) * (1.0f / 16777216.0f);  // mant * 2^-24, exact
+    return sign ? -v : v;
+  } else {
+    x = sign | (exp + 112) << 23 | mant << 13;
+  }
+  float f;
+  std::memcpy(&f, &x, 4);
+  return f;
+}
+
+float storedFloat(TexelFormat format, const uint8_t* texel, int c) {
+  const uint32_t v = storedChannel(format, texel, c);
+  if (texelFormatInfo(format).bits[c] == 16) return halfToFloat(static_cast<uint16_t>(v));
+  float f;
+  std::memcpy(&f, &v, 4);
+  return f;
+}
+
 void decodeTexelFloat(TexelFormat format, const uint8_t* texel, float rgba[4]) {
   const TexelFormatInfo& info = texelFormatInfo(format);
   float c[4] = {0, 0, 0, 0};
   for (int i = 0; i < info.channels; ++i) {
     if (!info.bits[i]) continue;
+    if (info.floating) {
+      c[i] = storedFloat(format, texel, i);
+      continue;
+    }
     const uint32_t v = storedChannel(format, texel, i);
     if (isSrgbColour(info, i)) {
       c[i] = srgbToLinear(v);

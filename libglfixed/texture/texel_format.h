@@ -55,6 +55,20 @@ enum class TexelFormat : uint8_t {
   SRGBX8,  // GL_SRGB, GL_SRGB8
   SL8,     // GL_SLUMINANCE, GL_SLUMINANCE8
   SL8A8,   // GL_SLUMINANCE_ALPHA, GL_SLUMINANCE8_ALPHA8
+  // ARB_texture_float: channels held as IEEE floats of 32 or 16 bits
+  // (llvmpipe's R32G32B32A32_FLOAT ..., R16G16B16A16_FLOAT ...), unclamped.
+  RGBA32F,
+  RGBX32F,  // GL_RGB32F_ARB (alpha reads 1)
+  A32F,
+  I32F,
+  L32F,
+  L32A32F,
+  RGBA16F,
+  RGBX16F,  // GL_RGB16F_ARB
+  A16F,
+  I16F,
+  L16F,
+  L16A16F,
   Count
 };
 
@@ -68,6 +82,7 @@ struct TexelFormatInfo {
   int bytesPerChannel; // 1, 2 or 4
   uint8_t bits[4];     // the bits of each stored channel (0: unused)
   bool srgb = false;   // colour channels (not alpha) are sRGB-encoded
+  bool floating = false;  // channels are floats of `bits` bits (ARB_texture_float)
 };
 
 // The component sizes glGetTexLevelParameter reports (GL_TEXTURE_RED_SIZE ...).
@@ -96,6 +111,19 @@ void decodeTexelUnorm8(TexelFormat format, const uint8_t* texel, uint8_t rgba[4]
 // One texel as float RGBA, converted as llvmpipe converts it for sampling
 // (unorm n bits: unormToFloat), the base format's mapping applied.
 void decodeTexelFloat(TexelFormat format, const uint8_t* texel, float rgba[4]);
+
+// A float as a half (IEEE binary16) the way Mesa stores it in a 16F texture:
+// rounded toward zero, a finite value past the largest half giving 65504
+// (measured: 1 + 3/2048 stores 1 + 1/1024, 70000 stores 65504).
+uint16_t floatToHalf(float f);
+// A float as a half rounded to nearest, ties to even, a value from 65520
+// up giving infinity: how Mesa packs GL_HALF_FLOAT_ARB client data
+// (glGetTexImage; measured: 1 + 3/2048 gives 1 + 2/1024).
+uint16_t floatToHalfNearest(float f);
+// A half as a float (exact).
+float halfToFloat(uint16_t h);
+// Channel `c` of a texel of a floating format, as a float.
+float storedFloat(TexelFormat format, const uint8_t* texel, int c);
 
 // An n-bit unsigned normalized value (n <= 24) as a float, the way llvmpipe's
 // sampler converts it (gallivm lp_build_unsigned_norm_to_float): the integer

@@ -66,7 +66,8 @@ int elementBytes(GLenum type) {
     case GL_UNSIGNED_BYTE:
     case GL_BYTE: return 1;
     case GL_UNSIGNED_SHORT:
-    case GL_SHORT: return 2;
+    case GL_SHORT:
+    case GL_HALF_FLOAT_ARB: return 2;
     case GL_UNSIGNED_INT:
     case GL_INT:
     case GL_FLOAT:
@@ -135,6 +136,7 @@ float elementToFloat(uint32_t bits, GLenum type) {
       std::memcpy(&f, &bits, 4);
       return f;
     }
+    case GL_HALF_FLOAT_ARB: return halfToFloat(static_cast<uint16_t>(bits));  // ARB_half_float_pixel
     default: return 0;
   }
 }
@@ -207,7 +209,13 @@ void storeChannels(TexelFormat format, const float c[4], bool fromBytes, uint8_t
     const int bits = info.bits[i];
     uint32_t v = 0;
     const float f = clamp01(c[i]);
-    if (bits == 0) {
+    if (info.floating) {  // ARB_texture_float: kept as it is, not clamped
+      if (bits == 16) {
+        v = floatToHalf(c[i]);
+      } else if (bits == 32) {
+        std::memcpy(&v, &c[i], 4);
+      }
+    } else if (bits == 0) {
       v = 0;
     } else if (fromBytes && bits > 8) {
       const uint32_t b = static_cast<uint32_t>(std::nearbyint(f * 255.0f));
@@ -302,6 +310,10 @@ uint32_t clientColorIndex(const ClientLayout& layout, const uint8_t* pixels, GLe
       float f;
       std::memcpy(&f, &bits, 4);
       // (GLuint) f as x86-64 converts it: through a 64-bit integer.
+      return f > -9.2e18f && f < 9.2e18f ? static_cast<uint32_t>(static_cast<int64_t>(f)) : 0u;
+    }
+    case GL_HALF_FLOAT_ARB: {
+      const float f = halfToFloat(static_cast<uint16_t>(readElement(p, 2, layout.swapBytes)));
       return f > -9.2e18f && f < 9.2e18f ? static_cast<uint32_t>(static_cast<int64_t>(f)) : 0u;
     }
     default: return readElement(p, 4, layout.swapBytes);  // GL_UNSIGNED_INT, GL_INT
@@ -475,6 +487,10 @@ void texelToRGBA(TexelFormat format, const uint8_t* texel, float rgba[4]) {
   float c[4] = {0, 0, 0, 0};
   for (int i = 0; i < info.channels; ++i) {
     if (!info.bits[i]) continue;
+    if (info.floating) {
+      c[i] = storedFloat(format, texel, i);
+      continue;
+    }
     const uint32_t v = storedChannel(format, texel, i);
     c[i] = info.bits[i] == 32 ? static_cast<float>(double(v) / 4294967295.0)
                               : static_cast<float>(v) / static_cast<float>((1u << info.bits[i]) - 1);
@@ -510,6 +526,7 @@ uint32_t floatToElement(float f, GLenum type) {
       std::memcpy(&v, &f, 4);
       return v;
     }
+    case GL_HALF_FLOAT_ARB: return floatToHalfNearest(f);
     default: return 0;
   }
 }
@@ -554,6 +571,8 @@ void packDepthStencil(const uint8_t* texel, GLenum format, GLenum type, uint8_t*
       uint32_t v;
       std::memcpy(&v, &f, 4);
       writeElement(out, 4, v);
+    } else if (type == GL_HALF_FLOAT_ARB) {
+      writeElement(out, 2, floatToHalfNearest(static_cast<float>(stencil)));
     } else {
       writeElement(out, elementBytes(type), stencil);
     }

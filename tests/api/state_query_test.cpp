@@ -534,6 +534,7 @@ TEST_F(StateQueryTest, AdvertisedExtensionsHaveTheirCommands) {
       {"GL_ARB_texture_env_crossbar", {}},
       {"GL_ARB_texture_env_dot3", {}},
       {"GL_ARB_texture_mirrored_repeat", {}},
+      {"GL_ARB_texture_float", {}},
       {"GL_ARB_texture_non_power_of_two", {}},
       {"GL_EXT_bgra", {}},
       {"GL_EXT_packed_pixels", {}},

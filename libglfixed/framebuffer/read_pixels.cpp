@@ -240,39 +240,6 @@ void storeColorComponent(uint8_t* dst, GLenum type, float f, int byte) {
   }
 }
 
-// One pixel's components (in the format's order) as a packed element
-// (table 3.8), rounded as Mesa packs them (measured; reference/MESA_FACTS.md
-// "Packed pixel types"): 8-bit fields take the byte `b`; with `viaBytes`
-// (Mesa's ubyte intermediate) narrower fields the byte rescaled and rounded,
-// and with `replicateBytes` (an RGBA8 source) 10-bit fields the byte with its
-// high bits replicated below; the rest from the float `c` (clamped to [0, 1])
-// as (uint)(c * (2^n - 1) + 0.5) in float.
-uint32_t packElement(const texture::Packed& packed, const float c[4], const uint8_t b[4], bool viaBytes,
-                     bool replicateBytes) {
-  uint32_t v = 0;
-  int used = 0;
-  const int total = packed.bytes * 8;
-  for (int n = 0; n < packed.fields; ++n) {
-    const int w = packed.width[n];
-    const int shift = packed.reversed ? used : total - used - w;
-    used += w;
-    const uint32_t max = (1u << w) - 1;
-    uint32_t field;
-    if (w == 8) {
-      field = b[n];
-    } else if (w < 8 && viaBytes) {
-      field = (b[n] * max + 127) / 255;  // never a tie: 255 is odd
-    } else if (w == 10 && replicateBytes) {
-      field = (uint32_t{b[n]} << 2) | (b[n] >> 6);
-    } else {
-      const float x = c[n] > 0.0f ? (c[n] < 1.0f ? c[n] : 1.0f) : 0.0f;
-      field = static_cast<uint32_t>(x * static_cast<float>(max) + 0.5f);
-    }
-    v |= field << shift;
-  }
-  return v;
-}
-
 }  // namespace
 
 size_t packedImageBytes(const PixelStoreAttrib& pack, GLsizei width, GLsizei height, GLenum format, GLenum type) {
@@ -449,7 +416,7 @@ GLenum readPixels(const Framebuffer& fb, const PixelStoreAttrib& pack, GLint x, 
         const bool rgba8 = bytes && rb.red == 0 && rb.green == 1 && rb.blue == 2 && rb.alpha == 3;
         const bool viaBytes =
             !colorTransfer && rb.channels != ChannelType::kFloat32 && rb.channels != ChannelType::kFloat16;
-        const uint32_t v = packElement(packed, c, b, viaBytes, viaBytes && rgba8);
+        const uint32_t v = texture::packElement(packed, c, b, viaBytes, viaBytes && rgba8);
         // In native byte order, as Mesa writes it.
         if (packed.bytes == 1) {
           *dst = static_cast<uint8_t>(v);

@@ -591,6 +591,38 @@ void packDepthStencil(const uint8_t* texel, GLenum format, GLenum type, uint8_t*
 
 }  // namespace
 
+// One pixel's components (in the format's order) as a packed element
+// (table 3.8), rounded as Mesa packs them (measured; reference/MESA_FACTS.md
+// "Packed pixel types"): 8-bit fields take the byte `b`; with `viaBytes`
+// (Mesa's ubyte intermediate) narrower fields the byte rescaled and rounded,
+// and with `replicateBytes` (an RGBA8 source) 10-bit fields the byte with its
+// high bits replicated below; the rest from the float `c` (clamped to [0, 1])
+// as (uint)(c * (2^n - 1) + 0.5) in float.
+uint32_t packElement(const Packed& packed, const float c[4], const uint8_t b[4], bool viaBytes,
+                     bool replicateBytes) {
+  uint32_t v = 0;
+  int used = 0;
+  const int total = packed.bytes * 8;
+  for (int n = 0; n < packed.fields; ++n) {
+    const int w = packed.width[n];
+    const int shift = packed.reversed ? used : total - used - w;
+    used += w;
+    const uint32_t max = (1u << w) - 1;
+    uint32_t field;
+    if (w == 8) {
+      field = b[n];
+    } else if (w < 8 && viaBytes) {
+      field = (b[n] * max + 127) / 255;  // never a tie: 255 is odd
+    } else if (w == 10 && replicateBytes) {
+      field = (uint32_t{b[n]} << 2) | (b[n] >> 6);
+    } else {
+      field = static_cast<uint32_t>(clamp01(c[n]) * static_cast<float>(max) + 0.5f);
+    }
+    v |= field << shift;
+  }
+  return v;
+}
+
 void packImage(const TextureImage& image, const ClientLayout& layout, GLenum format, GLenum type,
                uint8_t* pixels) {
   const int components = componentsOf(format);
@@ -648,26 +680,14 @@ void packImage(const TextureImage& image, const ClientLayout& layout, GLenum for
                 rgbaBytes[n] = static_cast<uint8_t>(std::nearbyint(clamp01(rgba[n]) * 255.0f));
             }
           }
+          // Without the bytes, 8-bit fields take the float's rounding.
+          if (!viaBytes)
+            for (int n = 0; n < 4; ++n)
+              rgbaBytes[n] = static_cast<uint8_t>(clamp01(rgba[n]) * 255.0f + 0.5f);
           const bool bgra = format == GL_BGRA;
           const uint8_t b[4] = {bgra ? rgbaBytes[2] : rgbaBytes[0], rgbaBytes[1], bgra ? rgbaBytes[0] : rgbaBytes[2],
                                 rgbaBytes[3]};
-          uint32_t v = 0;
-          int used = 0;
-          const int total = packed.bytes * 8;
-          for (int n = 0; n < packed.fields; ++n) {
-            const int w = packed.width[n];
-            const int shift = packed.reversed ? used : total - used - w;
-            used += w;
-            const uint32_t max = (1u << w) - 1;
-            uint32_t field;
-            if (viaBytes && w <= 8)
-              field = (b[n] * max + 127) / 255;  // never a tie: 255 is odd
-            else if (viaBytes && w == 10 && image.format == TexelFormat::RGBA8)
-              field = (uint32_t{b[n]} << 2) | (b[n] >> 6);
-            else
-              field = static_cast<uint32_t>(clamp01(c[n]) * static_cast<float>(max) + 0.5f);
-            v |= field << shift;
-          }
+          const uint32_t v = packElement(packed, c, b, viaBytes, viaBytes && image.format == TexelFormat::RGBA8);
           writeElement(out, packed.bytes, v);
         } else if (format == GL_DEPTH_COMPONENT && (type == GL_UNSIGNED_INT || type == GL_INT)) {
           // Mesa packs depth as (GLuint)(z * 4294967295.0) and (GLint)(z *

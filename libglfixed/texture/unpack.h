@@ -27,6 +27,9 @@ struct Packed {
   bool reversed = false;
 };
 Packed packedType(GLenum type);
+// One pixel's components as a packed element, rounded as Mesa packs them
+// (unpack.cpp; glReadPixels and glGetTexImage).
+uint32_t packElement(const Packed& packed, const float c[4], const uint8_t b[4], bool viaBytes, bool replicateBytes);
 
 // The error a (format, type) pair of client pixel data gives (GL 2.1
 // §3.6.4; Mesa's _mesa_error_check_format_and_type): GL_INVALID_ENUM for an

@@ -56,7 +56,7 @@ bool indexList(Context& ctx, GLsizei count, GLenum type, const void* indices, pi
   out = pipeline::IndexList();
   out.type = type;
   out.baseVertex = baseVertex;
-  const size_t bytes = type == GL_UNSIGNED_BYTE ? 1 : (type == GL_UNSIGNED_SHORT ? 2 : 4);
+  const size_t bytes = out.indexBytes();
   if (const GLuint name = ctx.vertexArray.elementArrayBufferBinding) {
     const BufferObject* b = ctx.buffers.find(name);
     if (b && b->mapped) {
@@ -83,7 +83,7 @@ bool indexList(Context& ctx, GLsizei count, GLenum type, const void* indices, pi
 void appendRestartRuns(const Context& ctx, const pipeline::IndexList& list, std::vector<pipeline::IndexList>& out) {
   if (!ctx.vertexArray.primitiveRestart) return out.push_back(list);
   const GLuint restart = ctx.vertexArray.primitiveRestartIndex;
-  const size_t bytes = list.type == GL_UNSIGNED_BYTE ? 1 : (list.type == GL_UNSIGNED_SHORT ? 2 : 4);
+  const size_t bytes = list.indexBytes();
   uint32_t start = 0;
   for (uint32_t i = 0; i <= list.count; ++i) {
     if (i < list.count && list.at(i) != restart) continue;

@@ -35,6 +35,7 @@ struct IndexList {
   // are read (the sum wraps as an unsigned 32-bit index).
   int32_t baseVertex = 0;
   uint32_t at(size_t i) const;  // the index as stored
+  size_t indexBytes() const { return type == GL_UNSIGNED_BYTE ? 1 : (type == GL_UNSIGNED_SHORT ? 2 : 4); }
   uint32_t element(size_t i) const { return at(i) + static_cast<uint32_t>(baseVertex); }
 };
 
